@@ -1,0 +1,445 @@
+//! A Whitted-style ray tracer in one file: spheres and a checkered floor, one point light, hard
+//! shadows and mirror reflections, and beside the 3D view a top-down 2D slice of the scene.
+use minifb::{Key, Window, WindowOptions};
+use std::f64::consts::{FRAC_PI_2, TAU};
+use std::ops::{Add, Mul, Sub};
+use std::sync::{Mutex, atomic::AtomicU64, atomic::Ordering::Relaxed};
+use std::time::Instant;
+
+pub const VIEW: usize = 512; // each half of the window is VIEW x VIEW pixels
+pub const WIDTH: usize = 2 * VIEW; // a row of the frame: the 3D view, then the 2D slice
+pub const EPSILON: f64 = 1e-6; // a hit closer than this is the surface the ray starts on
+pub const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
+pub const AMBIENT: f64 = 0.1; // the light a surface gets even in shadow
+
+// Vector math: points, directions and colours (x, y, z = red, green, blue) are all a Vec3.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Vec3 {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+}
+
+pub const fn vec3(x: f64, y: f64, z: f64) -> Vec3 {
+    Vec3 { x, y, z }
+}
+
+impl Vec3 {
+    pub fn dot(self, other: Vec3) -> f64 {
+        self.x * other.x + self.y * other.y + self.z * other.z
+    }
+    pub fn length(self) -> f64 {
+        self.dot(self).sqrt()
+    }
+    pub fn normalize(self) -> Vec3 {
+        self * (1.0 / self.length())
+    }
+}
+
+macro_rules! componentwise {
+    ($trait:ident, $method:ident, $op:tt) => {
+        impl $trait for Vec3 {
+            type Output = Vec3;
+            fn $method(self, other: Vec3) -> Vec3 {
+                vec3(self.x $op other.x, self.y $op other.y, self.z $op other.z)
+            }
+        }
+    };
+}
+componentwise!(Add, add, +);
+componentwise!(Sub, sub, -);
+
+impl Mul<f64> for Vec3 {
+    type Output = Vec3;
+    fn mul(self, scale: f64) -> Vec3 {
+        vec3(self.x * scale, self.y * scale, self.z * scale)
+    }
+}
+
+// The ray: p(t) = O + tD with t > 0 and D normalized.
+#[derive(Clone, Copy, Debug)]
+pub struct Ray {
+    pub origin: Vec3,
+    pub direction: Vec3,
+}
+
+impl Ray {
+    pub fn new(origin: Vec3, towards: Vec3) -> Ray {
+        let direction = towards.normalize();
+        Ray { origin, direction }
+    }
+    pub fn at(&self, t: f64) -> Vec3 {
+        self.origin + self.direction * t
+    }
+}
+
+// The camera: eye E, view direction V, screen centre C = E + dV with d = 1 (a 90 degree field of
+// view), corners p0 (top left), p1 (top right), p2 (bottom left), and for pixel (u, v) the point
+// p(u, v) = p0 + u(p1 - p0) + v(p2 - p0) and the primary ray D = p(u, v) - E.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Camera {
+    pub position: Vec3,
+    pub yaw: f64,   // radians about +y; positive turns the view left
+    pub pitch: f64, // radians; positive looks up, taken within +-90 degrees so the view never flips
+}
+
+/// The unit vector for a yaw and a pitch; (0, 0) looks down -z.
+pub fn direction(yaw: f64, pitch: f64) -> Vec3 {
+    let (horizontal, y) = (pitch.cos(), pitch.sin());
+    vec3(-yaw.sin() * horizontal, y, -yaw.cos() * horizontal)
+}
+
+impl Camera {
+    /// The screen's corners [p0, p1, p2]: 1 to the right and 1 up from the centre.
+    pub fn screen(&self) -> [Vec3; 3] {
+        let pitch = self.pitch.clamp(-FRAC_PI_2, FRAC_PI_2);
+        let center = self.position + direction(self.yaw, pitch);
+        let right = direction(self.yaw - FRAC_PI_2, 0.0);
+        let up = direction(self.yaw, pitch + FRAC_PI_2);
+        let top_left = center - right + up;
+        [top_left, top_left + right * 2.0, top_left - up * 2.0]
+    }
+    /// The primary ray through the centre of pixel (x, y) of the 3D view, row 0 at the top.
+    pub fn primary_ray(&self, [p0, p1, p2]: [Vec3; 3], x: usize, y: usize) -> Ray {
+        let u = (x as f64 + 0.5) / VIEW as f64;
+        let v = (y as f64 + 0.5) / VIEW as f64;
+        let on_screen = p0 + (p1 - p0) * u + (p2 - p0) * v;
+        Ray::new(self.position, on_screen - self.position)
+    }
+}
+
+// Primitives: the sphere (p - C).(p - C) = r² and the plane p.N + d = 0, each with a material.
+#[derive(Clone, Copy, Debug)]
+pub enum Shape {
+    Sphere { center: Vec3, radius: f64 },
+    Plane { normal: Vec3, offset: f64 }, // N normalized, d = offset
+}
+
+#[derive(Clone, Copy, Debug)]
+pub struct Material {
+    pub color: Vec3,
+    pub reflectivity: f64, // 0 is matte, 1 a perfect mirror
+    pub checkered: bool,
+}
+
+impl Shape {
+    /// The distance t to the nearest hit in front of the ray, if there is one.
+    pub fn intersect(&self, ray: &Ray) -> Option<f64> {
+        let ahead = |t: f64| (t > EPSILON && t < f64::INFINITY).then_some(t);
+        match *self {
+            // t = -(O.N + d) / (D.N): infinite or NaN for a ray parallel to the plane, so no hit.
+            Shape::Plane { normal, offset } => {
+                ahead(-(ray.origin.dot(normal) + offset) / ray.direction.dot(normal))
+            }
+            // Project C on the ray, t_c = (C - O).D, where it passes C at p² = |C - O|² - t_c²;
+            // the hits are half a chord, sqrt(r² - p²), either side: the far one from inside.
+            Shape::Sphere { center, radius } => {
+                let to_center = center - ray.origin;
+                let t_center = to_center.dot(ray.direction);
+                let p2 = to_center.dot(to_center) - t_center * t_center;
+                if p2 > radius * radius {
+                    return None;
+                }
+                let half_chord = (radius * radius - p2).sqrt();
+                ahead(t_center - half_chord).or(ahead(t_center + half_chord))
+            }
+        }
+    }
+    pub fn normal_at(&self, point: Vec3) -> Vec3 {
+        match *self {
+            Shape::Sphere { center, .. } => (point - center).normalize(),
+            Shape::Plane { normal, .. } => normal,
+        }
+    }
+}
+
+impl Material {
+    /// The checkerboard F(x, z): unit squares, darker where floor(x) + floor(z) is odd.
+    pub fn color_at(&self, point: Vec3) -> Vec3 {
+        let odd = (point.x.floor() as i64 + point.z.floor() as i64) & 1 == 1;
+        self.color * if self.checkered && odd { 0.25 } else { 1.0 }
+    }
+}
+
+// The scene: the objects, one point light and a flat sky.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    pub objects: Vec<(Shape, Material)>,
+    pub light: Vec3,
+    pub sky: Vec3,
+}
+
+impl Default for Scene {
+    /// The demo: a checkered floor at y = -1 and on it four balls, one of them a mirror.
+    fn default() -> Scene {
+        let material = |color, reflectivity, checkered| Material {
+            color,
+            reflectivity,
+            checkered,
+        };
+        let floor = Shape::Plane {
+            normal: vec3(0.0, 1.0, 0.0),
+            offset: 1.0,
+        };
+        let mut objects = vec![(floor, material(vec3(0.9, 0.9, 0.9), 0.0, true))];
+        for (x, y, z, radius, color, reflectivity) in [
+            (0.3, 0.0, -4.5, 1.0, vec3(0.9, 0.9, 0.9), 0.85),
+            (-2.0, -0.2, -4.2, 0.8, vec3(0.9, 0.2, 0.2), 0.0),
+            (1.9, -0.4, -3.4, 0.6, vec3(0.2, 0.8, 0.3), 0.0),
+            (-0.9, -0.45, -2.6, 0.55, vec3(0.2, 0.4, 0.9), 0.0),
+        ] {
+            let center = vec3(x, y, z);
+            let sphere = Shape::Sphere { center, radius };
+            objects.push((sphere, material(color, reflectivity, false)));
+        }
+        let (light, sky) = (vec3(-3.0, 5.0, 1.0), vec3(0.5, 0.7, 1.0));
+        Scene {
+            objects,
+            light,
+            sky,
+        }
+    }
+}
+
+// Shading: colour = surface × (ambient + N.L where the shadow ray reaches the light), mixed by
+// the reflectivity with the colour the mirror ray R = D - 2(D.N)N brings back.
+impl Scene {
+    /// The nearest hit: its point, the unit normal turned to face the ray, and the material.
+    pub fn nearest_hit(&self, ray: &Ray) -> Option<(Vec3, Vec3, Material)> {
+        let (t, shape, material) = (self.objects.iter())
+            .filter_map(|(shape, material)| Some((shape.intersect(ray)?, shape, material)))
+            .min_by(|a, b| a.0.total_cmp(&b.0))?;
+        let point = ray.at(t);
+        let normal = shape.normal_at(point); // turned below to face the ray
+        let facing = normal * -normal.dot(ray.direction).signum();
+        Some((point, facing, *material))
+    }
+
+    /// The shadow ray: does an object lie between the point and the light? Counts the ray.
+    pub fn in_shadow(&self, point: Vec3, rays: &mut u64) -> bool {
+        *rays += 1;
+        let distance = (self.light - point).length();
+        let ray = Ray::new(point, self.light - point);
+        (self.objects.iter()).any(|(shape, _)| shape.intersect(&ray).is_some_and(|t| t < distance))
+    }
+
+    /// The colour a ray brings back; `rays` counts every ray traced.
+    pub fn trace(&self, ray: &Ray, depth: u32, rays: &mut u64) -> Vec3 {
+        *rays += 1;
+        let Some((point, normal, material)) = self.nearest_hit(ray) else {
+            return self.sky;
+        };
+        let facing_light = normal.dot((self.light - point).normalize());
+        let mut brightness = AMBIENT;
+        if facing_light > 0.0 && !self.in_shadow(point, rays) {
+            brightness += (1.0 - AMBIENT) * facing_light;
+        }
+        let color = material.color_at(point) * brightness;
+        if material.reflectivity <= 0.0 || depth >= MAX_DEPTH {
+            return color;
+        }
+        let mirror = Ray::new(point, reflect(ray.direction, normal));
+        let mirrored = self.trace(&mirror, depth + 1, rays);
+        color * (1.0 - material.reflectivity) + mirrored * material.reflectivity
+    }
+}
+
+/// The mirror direction R = D - 2(D.N)N.
+pub fn reflect(direction: Vec3, normal: Vec3) -> Vec3 {
+    direction - normal * (2.0 * direction.dot(normal))
+}
+
+/// A colour as a 0RGB pixel, each channel clamped to [0, 1] (NaN to 0).
+pub fn to_rgb(color: Vec3) -> u32 {
+    let byte = |channel: f64| ((channel * 255.0) as u32).min(255);
+    byte(color.x) << 16 | byte(color.y) << 8 | byte(color.z)
+}
+
+// Rendering a 1024x512 frame: the 3D view on the left, the 2D slice on the right.
+/// Renders the whole frame on all cores and returns the number of rays traced.
+pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) -> u64 {
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let rays = render_view(scene, camera, frame, threads);
+    draw_slice(scene, camera, frame);
+    rays
+}
+
+/// The 3D view, a primary ray per pixel; each thread takes the next row until none are left.
+pub fn render_view(scene: &Scene, camera: &Camera, frame: &mut [u32], threads: usize) -> u64 {
+    assert_eq!(frame.len(), WIDTH * VIEW, "a frame is 1024 x 512 pixels");
+    let screen = camera.screen();
+    let rows = Mutex::new(frame.chunks_mut(WIDTH).enumerate());
+    let rays = AtomicU64::new(0);
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| {
+                let mut count = 0;
+                for (y, row) in std::iter::from_fn(|| rows.lock().unwrap().next()) {
+                    for (x, pixel) in row[..VIEW].iter_mut().enumerate() {
+                        let ray = camera.primary_ray(screen, x, y);
+                        *pixel = to_rgb(scene.trace(&ray, 0, &mut count));
+                    }
+                }
+                rays.fetch_add(count, Relaxed);
+            });
+        }
+    });
+    rays.into_inner()
+}
+
+// The 2D slice: the plane at the eye's height seen from above, x to the right and -z up.
+pub const MAP_CORNER: Vec3 = vec3(-6.4, 0.0, -9.4); // the world x and z at the map's top left
+pub const MAP_SCALE: f64 = 40.0; // map pixels per world unit
+
+fn plot(frame: &mut [u32], point: Vec3, color: u32) {
+    let [x, y] = [point.x - MAP_CORNER.x, point.z - MAP_CORNER.z].map(|w| w * MAP_SCALE);
+    if (0.0..VIEW as f64).contains(&x) && (0.0..VIEW as f64).contains(&y) {
+        frame[y as usize * WIDTH + VIEW + x as usize] = color;
+    }
+}
+
+fn draw_dot(frame: &mut [u32], point: Vec3, color: u32) {
+    for (dx, dz) in (-2..=2).flat_map(|dx| (-2..=2).map(move |dz| (dx, dz))) {
+        let offset = vec3(dx as f64, 0.0, dz as f64) * (1.0 / MAP_SCALE);
+        plot(frame, point + offset, color);
+    }
+}
+
+/// A circle in the plane y = centre.y, a dot per map pixel along it (none for a NaN radius).
+fn draw_circle(frame: &mut [u32], center: Vec3, radius: f64, color: u32) {
+    let dots = (TAU * radius * MAP_SCALE).min(1e5) as usize;
+    for angle in (0..dots).map(|i| TAU * i as f64 / dots as f64) {
+        plot(frame, center + direction(angle, 0.0) * radius, color);
+    }
+}
+
+/// The part of a segment on the map, clipped to the map's edges, a dot per pixel along it.
+fn draw_line(frame: &mut [u32], from: Vec3, to: Vec3, color: u32) {
+    let (mut enter, mut leave) = (0.0f64, 1.0f64);
+    for (start, end, edge) in [(from.x, to.x, MAP_CORNER.x), (from.z, to.z, MAP_CORNER.z)] {
+        let [t0, t1] = [edge, edge + VIEW as f64 / MAP_SCALE].map(|e| (e - start) / (end - start));
+        (enter, leave) = (enter.max(t0.min(t1)), leave.min(t0.max(t1)));
+    }
+    let dots = ((to - from).length() * MAP_SCALE * (leave - enter)).ceil() as usize; // 0: off the map
+    for t in (0..dots).map(|i| enter + (leave - enter) * (i as f64 + 0.5) / dots as f64) {
+        plot(frame, from + (to - from) * t, color);
+    }
+}
+
+/// The right half: spheres, screen, every 10th ray of the middle row with its hit, light, camera.
+pub fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
+    const FAR: f64 = 1e6; // where a ray that hits nothing is drawn to: past the map's edge
+    for row in frame.chunks_mut(WIDTH) {
+        row[VIEW..].fill(0x202020);
+    }
+    let eye = camera.position;
+    for &(shape, material) in &scene.objects {
+        if let Shape::Sphere { center, radius } = shape {
+            // Where the sphere cuts the plane y = eye.y: a circle of radius² = r² - (C.y - eye.y)².
+            let cut = (radius * radius - (center.y - eye.y).powi(2)).sqrt();
+            draw_circle(frame, center, cut, to_rgb(material.color));
+        }
+    }
+    let screen @ [p0, p1, p2] = camera.screen();
+    let to_middle_row = (p2 - p0) * 0.5;
+    draw_line(frame, p0 + to_middle_row, p1 + to_middle_row, 0xffffff);
+    for x in (0..VIEW).step_by(10) {
+        let ray = camera.primary_ray(screen, x, VIEW / 2);
+        let Some((point, normal, material)) = scene.nearest_hit(&ray) else {
+            draw_line(frame, eye, ray.at(FAR), 0x808080);
+            continue;
+        };
+        draw_line(frame, eye, point, 0xc0c040);
+        draw_line(frame, point, scene.light, 0x606060);
+        if material.reflectivity > 0.0 {
+            let mirror = Ray::new(point, reflect(ray.direction, normal));
+            let bounce = scene.nearest_hit(&mirror).map(|hit| hit.0);
+            let bounce = bounce.unwrap_or(mirror.at(FAR));
+            draw_line(frame, point, bounce, 0x40c0ff);
+        }
+        draw_dot(frame, point, 0xff4040);
+    }
+    draw_dot(frame, scene.light, 0xffff00);
+    draw_dot(frame, eye, 0xffffff);
+}
+
+// The program: the window and its controls, or headless --bench and --screenshot.
+const USAGE: &str = "usage: raytracer [--bench [FRAMES] | --screenshot FILE.ppm]";
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match args.iter().map(String::as_str).collect::<Vec<_>>()[..] {
+        [] => run_window(),
+        ["--bench"] => bench(100),
+        ["--bench", frames] => match frames.parse() {
+            Ok(frames) if frames > 0 => bench(frames),
+            _ => exit_with(2, USAGE),
+        },
+        ["--screenshot", path] => screenshot(path),
+        _ => exit_with(2, USAGE),
+    }
+}
+
+/// Ends the program with one line on stderr: status 1 for a failure, 2 for a bad command line.
+fn exit_with(status: i32, message: &str) -> ! {
+    eprintln!("raytracer: {message}");
+    std::process::exit(status);
+}
+
+fn run_window() {
+    let options = WindowOptions::default();
+    let mut window = Window::new("raytracer", WIDTH, VIEW, options).unwrap_or_else(|error| {
+        exit_with(1, &format!("cannot open a window: no display? ({error})"))
+    });
+    println!("W/S forward/back, A/D left/right, R/F up/down, arrow keys turn, Escape quits");
+    let (scene, mut camera) = (Scene::default(), Camera::default());
+    let mut frame = vec![0; WIDTH * VIEW];
+    let mut last_frame = Instant::now();
+    while window.is_open() && !window.is_key_down(Key::Escape) {
+        let dt = last_frame.elapsed().as_secs_f64();
+        last_frame = Instant::now();
+        // Each key held moves or turns by speed × the seconds the last frame took.
+        let held = |key| if window.is_key_down(key) { dt } else { 0.0 };
+        let forward = direction(camera.yaw, camera.pitch) * (held(Key::W) - held(Key::S));
+        let right = direction(camera.yaw - FRAC_PI_2, 0.0) * (held(Key::D) - held(Key::A));
+        let up = vec3(0.0, held(Key::R) - held(Key::F), 0.0);
+        camera.position = camera.position + (forward + right + up) * 2.0;
+        camera.yaw += 1.5 * (held(Key::Left) - held(Key::Right));
+        let pitch = camera.pitch + 1.5 * (held(Key::Up) - held(Key::Down));
+        camera.pitch = pitch.clamp(-FRAC_PI_2, FRAC_PI_2);
+        render(&scene, &camera, &mut frame);
+        window.set_title(&format!("raytracer - {:.0} fps", 1.0 / dt));
+        let shown = window.update_with_buffer(&frame, WIDTH, VIEW);
+        shown.unwrap_or_else(|error| exit_with(1, &error.to_string()));
+    }
+}
+
+fn bench(frames: usize) {
+    let (scene, camera) = (Scene::default(), Camera::default());
+    let mut frame = vec![0; WIDTH * VIEW];
+    let (mut rays, mut milliseconds) = (0, Vec::new());
+    for _ in 0..frames {
+        let start = Instant::now();
+        rays = render(&scene, &camera, &mut frame);
+        milliseconds.push(start.elapsed().as_secs_f64() * 1e3);
+    }
+    milliseconds.sort_by(f64::total_cmp);
+    let (median, min) = (milliseconds[frames / 2], milliseconds[0]);
+    let (fps, mrays) = (1e3 / median, rays as f64 / median / 1e3);
+    let (primary, secondary) = (VIEW * VIEW, rays as usize - VIEW * VIEW);
+    println!("{frames} frames: median {median:.2} ms, min {min:.2} ms, {fps:.0} fps");
+    println!("{mrays:.1} Mrays/s: {primary} primary + {secondary} shadow and mirror rays a frame");
+}
+
+fn screenshot(path: &str) {
+    let mut frame = vec![0; WIDTH * VIEW];
+    render(&Scene::default(), &Camera::default(), &mut frame);
+    let mut ppm = format!("P6\n{WIDTH} {VIEW}\n255\n").into_bytes();
+    ppm.extend(
+        frame
+            .iter()
+            .flat_map(|pixel| [16, 8, 0].map(|shift| (pixel >> shift) as u8)),
+    );
+    let written = std::fs::write(path, ppm);
+    written.unwrap_or_else(|error| exit_with(1, &format!("cannot write {path}: {error}")));
+}

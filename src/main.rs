@@ -124,6 +124,7 @@ pub struct Material {
 
 impl Shape {
     /// The distance t to the nearest hit in front of the ray, if there is one.
+    #[inline] // called for every shape and every ray: the hottest code
     pub fn intersect(&self, ray: &Ray) -> Option<f64> {
         let ahead = |t: f64| (t > EPSILON && t < f64::INFINITY).then_some(t);
         match *self {
@@ -147,7 +148,7 @@ impl Shape {
     }
     pub fn normal_at(&self, point: Vec3) -> Vec3 {
         match *self {
-            Shape::Sphere { center, .. } => (point - center).normalize(),
+            Shape::Sphere { center, radius } => (point - center) * (1.0 / radius),
             Shape::Plane { normal, .. } => normal,
         }
     }
@@ -205,22 +206,20 @@ impl Default for Scene {
 // the reflectivity with the colour the mirror ray R = D - 2(D.N)N brings back.
 impl Scene {
     /// The nearest hit: its point, the unit normal turned to face the ray, and the material.
-    pub fn nearest_hit(&self, ray: &Ray) -> Option<(Vec3, Vec3, Material)> {
+    pub fn nearest_hit(&self, ray: &Ray) -> Option<(Vec3, Vec3, &Material)> {
         let (t, shape, material) = (self.objects.iter())
             .filter_map(|(shape, material)| Some((shape.intersect(ray)?, shape, material)))
             .min_by(|a, b| a.0.total_cmp(&b.0))?;
         let point = ray.at(t);
         let normal = shape.normal_at(point); // turned below to face the ray
         let facing = normal * -normal.dot(ray.direction).signum();
-        Some((point, facing, *material))
+        Some((point, facing, material))
     }
 
-    /// The shadow ray: does an object lie between the point and the light? Counts the ray.
-    pub fn in_shadow(&self, point: Vec3, rays: &mut u64) -> bool {
+    /// The shadow ray: does an object lie between its origin and the light? Counts the ray.
+    pub fn in_shadow(&self, ray: &Ray, distance: f64, rays: &mut u64) -> bool {
         *rays += 1;
-        let distance = (self.light - point).length();
-        let ray = Ray::new(point, self.light - point);
-        (self.objects.iter()).any(|(shape, _)| shape.intersect(&ray).is_some_and(|t| t < distance))
+        (self.objects.iter()).any(|(shape, _)| shape.intersect(ray).is_some_and(|t| t < distance))
     }
 
     /// The colour a ray brings back; `rays` counts every ray traced.
@@ -229,9 +228,14 @@ impl Scene {
         let Some((point, normal, material)) = self.nearest_hit(ray) else {
             return self.sky;
         };
-        let facing_light = normal.dot((self.light - point).normalize());
+        let distance = (self.light - point).length();
+        let to_light = Ray {
+            origin: point,
+            direction: (self.light - point) * (1.0 / distance),
+        };
+        let facing_light = normal.dot(to_light.direction);
         let mut brightness = AMBIENT;
-        if facing_light > 0.0 && !self.in_shadow(point, rays) {
+        if facing_light > 0.0 && !self.in_shadow(&to_light, distance, rays) {
             brightness += (1.0 - AMBIENT) * facing_light;
         }
         let color = material.color_at(point) * brightness;

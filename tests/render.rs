@@ -317,7 +317,11 @@ fn the_slice_shows_the_camera_a_sphere_outline_and_a_sampled_ray() {
         assert!(on_ray, "ray missing at {t}");
     }
     assert_ne!(map_pixel(&frame, -3.0, -3.0), background);
-    assert_eq!(map_pixel(&frame, -3.4, -3.0), background, "just left of the ray");
+    assert_eq!(
+        map_pixel(&frame, -3.4, -3.0),
+        background,
+        "just left of the ray"
+    );
 }
 
 #[test]

@@ -92,10 +92,9 @@ pub fn direction(yaw: f64, pitch: f64) -> Vec3 {
 impl Camera {
     /// The screen's corners [p0, p1, p2]: 1 to the right and 1 up from the centre.
     pub fn screen(&self) -> [Vec3; 3] {
-        let pitch = self.pitch.clamp(-FRAC_PI_2, FRAC_PI_2);
-        let center = self.position + direction(self.yaw, pitch);
+        let center = self.position + direction(self.yaw, self.pitch);
         let right = direction(self.yaw - FRAC_PI_2, 0.0);
-        let up = direction(self.yaw, pitch + FRAC_PI_2);
+        let up = direction(self.yaw, self.pitch + FRAC_PI_2);
         let top_left = center - right + up;
         [top_left, top_left + right * 2.0, top_left - up * 2.0]
     }

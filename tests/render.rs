@@ -176,6 +176,23 @@ fn a_sphere_between_floor_and_light_casts_a_shadow() {
 }
 
 #[test]
+fn only_occluders_between_the_point_and_the_light_cast_shadows() {
+    // A ball above the light, and one beside it: neither lies between the floor and the light.
+    let light = vec3(0.0, 2.0, -4.0);
+    let above = sphere(vec3(0.0, 4.0, -4.0), 1.0, matte(RED));
+    let beside = sphere(vec3(4.0, 0.0, -8.0), 1.0, matte(RED));
+    let camera = Camera {
+        position: vec3(0.0, 1.0, 0.0),
+        pitch: -0.3,
+        yaw: 0.0,
+    };
+    let lit = frame_of(&scene(vec![floor()], light), &camera);
+    let with_balls = frame_of(&scene(vec![floor(), above, beside], light), &camera);
+    let point = project(&camera, vec3(0.5, -1.0, -3.5));
+    assert_eq!(rgb(&with_balls, point), rgb(&lit, point));
+}
+
+#[test]
 fn the_floor_is_checkered_by_floor_x_plus_floor_z() {
     let scene = scene(vec![floor()], vec3(0.0, 100.0, 0.0));
     let camera = Camera {
@@ -342,6 +359,23 @@ fn odd_cameras_render_valid_frames() {
     };
     let frame = frame_of(&scene, &inside);
     assert!(frame.iter().all(|pixel| pixel >> 24 == 0));
+    // From the centre of the mirror ball every ray meets its inside, never the sky.
+    let sky = [byte(scene.sky.x), byte(scene.sky.y), byte(scene.sky.z)];
+    assert!((0..VIEW).all(|y| (0..VIEW).all(|x| rgb(&frame, (x, y)) != sky)));
+    // Below the floor, looking up at it: its underside faces away from the light, so it is dark.
+    let below = Camera {
+        position: vec3(0.0, -3.0, 0.0),
+        pitch: 1.0,
+        yaw: 0.0,
+    };
+    let frame = frame_of(&scene, &below);
+    assert!(frame.iter().all(|pixel| pixel >> 24 == 0));
+    let underside = project(&below, vec3(0.5, -1.0, -1.5));
+    assert!(
+        rgb(&frame, underside)[1] <= byte(AMBIENT * 0.9) + 1,
+        "{:?}",
+        rgb(&frame, underside)
+    );
     let down = Camera {
         pitch: -std::f64::consts::FRAC_PI_2,
         ..Camera::default()

@@ -1,0 +1,355 @@
+//! Any camera, any scene, any command line: no panic, no NaN, a clear message.
+#[allow(dead_code)]
+#[path = "../src/main.rs"]
+mod raytracer;
+
+use raytracer::*;
+use std::f64::consts::{FRAC_PI_2, TAU};
+use std::process::Command;
+
+/// A small deterministic pseudo-random generator (xorshift64*), so a failure can be replayed.
+struct Random(u64);
+
+impl Random {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn between(&mut self, low: f64, high: f64) -> f64 {
+        low + (high - low) * self.next()
+    }
+    fn point(&mut self, size: f64) -> Vec3 {
+        vec3(
+            self.between(-size, size),
+            self.between(-size, size),
+            self.between(-size, size),
+        )
+    }
+}
+
+fn material(random: &mut Random) -> Material {
+    let color = vec3(random.next(), random.next(), random.next());
+    let reflectivity = if random.next() < 0.3 {
+        1.0
+    } else {
+        random.next()
+    };
+    Material {
+        color,
+        reflectivity,
+        checkered: random.next() < 0.5,
+    }
+}
+
+fn random_scene(random: &mut Random) -> Scene {
+    let count = (random.next() * 5.0) as usize;
+    let objects = (0..count)
+        .map(|_| {
+            let shape = if random.next() < 0.7 {
+                let radius = [0.0, 0.01, 1.0, 3.0, 1e4][(random.next() * 5.0) as usize];
+                Shape::Sphere {
+                    center: random.point(5.0),
+                    radius,
+                }
+            } else {
+                let normal = random.point(1.0).normalize();
+                Shape::Plane {
+                    normal,
+                    offset: random.between(-3.0, 3.0),
+                }
+            };
+            (shape, material(random))
+        })
+        .collect();
+    Scene {
+        objects,
+        light: random.point(6.0),
+        sky: vec3(0.5, 0.7, 1.0),
+    }
+}
+
+fn random_camera(random: &mut Random) -> Camera {
+    let far = if random.next() < 0.1 { 1e4 } else { 6.0 };
+    let pitch = match (random.next() * 4.0) as usize {
+        0 => FRAC_PI_2,
+        1 => -FRAC_PI_2,
+        _ => random.between(-FRAC_PI_2, FRAC_PI_2),
+    };
+    Camera {
+        position: random.point(far),
+        yaw: random.between(-3.0 * TAU, 3.0 * TAU),
+        pitch,
+    }
+}
+
+fn valid(color: Vec3) -> bool {
+    [color.x, color.y, color.z]
+        .iter()
+        .all(|c| (0.0..=1.0 + 1e-9).contains(c))
+}
+
+fn assert_valid_frame(scene: &Scene, camera: &Camera, case: &str) {
+    let (mut first, mut second) = (vec![0; WIDTH * VIEW], vec![0; WIDTH * VIEW]);
+    render(scene, camera, &mut first);
+    render(scene, camera, &mut second);
+    assert!(
+        first.iter().all(|pixel| pixel >> 24 == 0),
+        "{case}: a pixel is not 0RGB"
+    );
+    assert!(first == second, "{case}: two renders differ");
+}
+
+/// Traces a spread of rays through the screen and checks every colour is a valid one.
+fn assert_valid_rays(scene: &Scene, camera: &Camera, case: &str) {
+    let screen = camera.screen();
+    for (x, y) in (0..VIEW)
+        .step_by(73)
+        .flat_map(|x| (0..VIEW).step_by(61).map(move |y| (x, y)))
+    {
+        let ray = camera.primary_ray(screen, x, y);
+        let color = scene.trace(&ray, 0, &mut 0);
+        assert!(valid(color), "{case}: pixel {x}, {y} is {color:?}");
+    }
+}
+
+#[test]
+fn a_thousand_camera_poses_and_hundreds_of_random_scenes() {
+    for seed in 1..=1200u64 {
+        let mut random = Random(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15));
+        let scene = if seed % 3 == 0 {
+            random_scene(&mut random)
+        } else {
+            Scene::default()
+        };
+        let camera = random_camera(&mut random);
+        let case = format!("seed {seed}: {camera:?} in {scene:?}");
+        assert_valid_rays(&scene, &camera, &case);
+        if seed % 60 == 0 {
+            assert_valid_frame(&scene, &camera, &case);
+        }
+    }
+}
+
+#[test]
+fn hits_are_in_front_of_the_ray_and_on_the_surface() {
+    let mut random = Random(7);
+    for case in 0..20_000 {
+        let ray = Ray::new(random.point(10.0), random.point(1.0));
+        let radius = random.between(0.0, 4.0);
+        let sphere = Shape::Sphere {
+            center: random.point(5.0),
+            radius,
+        };
+        let normal = random.point(1.0).normalize();
+        let plane = Shape::Plane {
+            normal,
+            offset: random.between(-5.0, 5.0),
+        };
+        if let Some(t) = sphere.intersect(&ray) {
+            let Shape::Sphere { center, radius } = sphere else {
+                unreachable!()
+            };
+            let off_surface = ((ray.at(t) - center).length() - radius).abs();
+            assert!(
+                t > 0.0 && off_surface < 1e-6,
+                "case {case}: sphere hit at t = {t}"
+            );
+        }
+        if let Some(t) = plane.intersect(&ray) {
+            let off_surface = (ray.at(t).dot(normal) + plane_offset(plane)).abs();
+            assert!(
+                t > 0.0 && off_surface < 1e-6,
+                "case {case}: plane hit at t = {t}"
+            );
+        }
+    }
+}
+
+fn plane_offset(plane: Shape) -> f64 {
+    match plane {
+        Shape::Plane { offset, .. } => offset,
+        Shape::Sphere { .. } => unreachable!(),
+    }
+}
+
+fn white(reflectivity: f64) -> Material {
+    Material {
+        color: vec3(1.0, 1.0, 1.0),
+        reflectivity,
+        checkered: false,
+    }
+}
+
+fn floor() -> (Shape, Material) {
+    (
+        Shape::Plane {
+            normal: vec3(0.0, 1.0, 0.0),
+            offset: 1.0,
+        },
+        white(0.0),
+    )
+}
+
+#[test]
+fn odd_scenes_render_valid_frames() {
+    let ball = |center, radius, material| (Shape::Sphere { center, radius }, material);
+    let sky = vec3(0.5, 0.7, 1.0);
+    let light = vec3(0.0, 5.0, 0.0);
+    let cases = [
+        ("no objects", vec![]),
+        ("only a floor", vec![floor()]),
+        (
+            "radius 0",
+            vec![floor(), ball(vec3(0.0, 0.0, -3.0), 0.0, white(0.0))],
+        ),
+        (
+            "huge radius",
+            vec![ball(vec3(0.0, 0.0, -1e6 - 5.0), 1e6, white(0.0))],
+        ),
+        (
+            "coincident",
+            vec![ball(vec3(0.0, 0.0, -3.0), 1.0, white(0.0)); 2],
+        ),
+    ];
+    for (case, objects) in cases {
+        let scene = Scene {
+            objects,
+            light,
+            sky,
+        };
+        assert_valid_frame(&scene, &Camera::default(), case);
+        assert_valid_rays(&scene, &Camera::default(), case);
+    }
+    let empty = Scene {
+        objects: vec![],
+        light,
+        sky,
+    };
+    let mut frame = vec![0; WIDTH * VIEW];
+    render(&empty, &Camera::default(), &mut frame);
+    let sky_pixel = (127 << 16) | (178 << 8) | 255;
+    assert!((0..VIEW).all(|y| {
+        frame[y * WIDTH..y * WIDTH + VIEW]
+            .iter()
+            .all(|&p| p == sky_pixel)
+    }));
+}
+
+#[test]
+fn a_light_inside_a_sphere_leaves_everything_else_in_shadow() {
+    let lamp = (
+        Shape::Sphere {
+            center: vec3(0.0, 2.0, -3.0),
+            radius: 0.5,
+        },
+        white(0.0),
+    );
+    let scene = Scene {
+        objects: vec![floor(), lamp],
+        light: vec3(0.0, 2.0, -3.0),
+        sky: vec3(0.0, 0.0, 0.0),
+    };
+    let camera = Camera::default();
+    let screen = camera.screen();
+    for y in (0..VIEW).step_by(8) {
+        for x in (0..VIEW).step_by(8) {
+            let color = scene.trace(&camera.primary_ray(screen, x, y), 0, &mut 0);
+            assert!(
+                color.x <= AMBIENT + 1e-9,
+                "pixel {x}, {y} is lit: {color:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn facing_mirrors_stop_at_the_maximum_depth() {
+    let mirror_ball = (
+        Shape::Sphere {
+            center: vec3(0.0, 1.0, -3.0),
+            radius: 1.0,
+        },
+        white(1.0),
+    );
+    let mirror_floor = (
+        Shape::Plane {
+            normal: vec3(0.0, 1.0, 0.0),
+            offset: 1.0,
+        },
+        white(1.0),
+    );
+    let scene = Scene {
+        objects: vec![mirror_ball, mirror_floor],
+        light: vec3(0.0, 5.0, 0.0),
+        sky: vec3(0.5, 0.7, 1.0),
+    };
+    // Straight down from between the two: the ray bounces between floor and ball.
+    let ray = Ray::new(vec3(0.0, -0.5, -3.0), vec3(0.0, -1.0, 0.0));
+    let mut rays = 0;
+    let color = scene.trace(&ray, 0, &mut rays);
+    assert!(valid(color));
+    // One ray and at most one shadow ray per bounce, MAX_DEPTH bounces after the first.
+    assert!(rays <= 2 * (MAX_DEPTH as u64 + 1), "{rays} rays");
+    assert!(rays >= MAX_DEPTH as u64 + 1, "{rays} rays: stopped early");
+}
+
+/// Runs the program with no display and returns (status, stdout, stderr).
+fn run(args: &[&str]) -> (Option<i32>, String, String) {
+    let output = Command::new(env!("CARGO_BIN_EXE_raytracer"))
+        .args(args)
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .expect("the program runs");
+    let text = |bytes: Vec<u8>| String::from_utf8(bytes).unwrap();
+    (
+        output.status.code(),
+        text(output.stdout),
+        text(output.stderr),
+    )
+}
+
+#[test]
+fn bad_input_gets_one_line_and_a_status() {
+    let (status, _, stderr) = run(&[]);
+    assert_eq!(status, Some(1), "no display: {stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.contains("display"), "{stderr}");
+    for args in [
+        &["--fast"][..],
+        &["--bench", "many"],
+        &["--bench", "0"],
+        &["--screenshot"],
+    ] {
+        let (status, stdout, stderr) = run(args);
+        assert_eq!(status, Some(2), "{args:?}: {stderr}");
+        assert!(
+            stderr.contains("usage") && stderr.lines().count() == 1,
+            "{args:?}: {stderr}"
+        );
+        assert!(stdout.is_empty(), "{args:?}");
+    }
+    let (status, _, stderr) = run(&["--screenshot", "/no/such/folder/shot.ppm"]);
+    assert_eq!(status, Some(1), "{stderr}");
+    assert!(stderr.contains("/no/such/folder/shot.ppm") && stderr.lines().count() == 1);
+}
+
+#[test]
+fn screenshot_and_bench_modes_work() {
+    let path = std::env::temp_dir().join(format!("raytracer-test-{}.ppm", std::process::id()));
+    let (status, _, stderr) = run(&["--screenshot", path.to_str().unwrap()]);
+    assert_eq!(status, Some(0), "{stderr}");
+    let ppm = std::fs::read(&path).unwrap();
+    std::fs::remove_file(&path).unwrap();
+    let header = format!("P6\n{WIDTH} {VIEW}\n255\n");
+    assert!(ppm.starts_with(header.as_bytes()));
+    assert_eq!(ppm.len(), header.len() + WIDTH * VIEW * 3);
+    let (status, stdout, _) = run(&["--bench", "3"]);
+    assert_eq!(status, Some(0));
+    assert!(
+        stdout.contains("3 frames: median") && stdout.contains("Mrays/s"),
+        "{stdout}"
+    );
+}

@@ -292,7 +292,7 @@ fn facing_mirrors_stop_at_the_maximum_depth() {
     assert!(valid(color));
     // One ray and at most one shadow ray per bounce, MAX_DEPTH bounces after the first.
     assert!(rays <= 2 * (MAX_DEPTH as u64 + 1), "{rays} rays");
-    assert!(rays >= MAX_DEPTH as u64 + 1, "{rays} rays: stopped early");
+    assert!(rays > MAX_DEPTH as u64, "{rays} rays: stopped early");
 }
 
 /// Runs the program with no display and returns (status, stdout, stderr).

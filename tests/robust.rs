@@ -353,3 +353,29 @@ fn screenshot_and_bench_modes_work() {
         "{stdout}"
     );
 }
+
+#[test]
+fn cameras_on_surfaces_and_far_away_render_valid_frames() {
+    let scene = Scene::default();
+    let poses = [
+        ("on the floor", vec3(0.0, -1.0, -1.0), 0.0, -0.5),
+        ("on top of the mirror ball", vec3(0.3, 1.0, -4.5), 1.0, -1.2),
+        ("below the floor", vec3(0.0, -5.0, 0.0), 0.0, 0.3),
+        ("10,000 units away", vec3(0.0, 0.0, 1e4), 0.0, 0.0),
+        (
+            "straight up, yaw past 2 pi",
+            vec3(0.0, 0.0, 0.0),
+            7.0,
+            FRAC_PI_2,
+        ),
+    ];
+    for (case, position, yaw, pitch) in poses {
+        let camera = Camera {
+            position,
+            yaw,
+            pitch,
+        };
+        assert_valid_frame(&scene, &camera, case);
+        assert_valid_rays(&scene, &camera, case);
+    }
+}

@@ -344,8 +344,6 @@ pub fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
         }
     }
     let screen @ [p0, p1, p2] = camera.screen();
-    let to_middle_row = (p2 - p0) * 0.5;
-    draw_line(frame, p0 + to_middle_row, p1 + to_middle_row, 0xffffff);
     for x in (0..VIEW).step_by(10) {
         let ray = camera.primary_ray(screen, x, VIEW / 2);
         let Some((point, normal, material)) = scene.nearest_hit(&ray) else {
@@ -362,6 +360,8 @@ pub fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
         }
         draw_dot(frame, point, 0xff4040);
     }
+    let to_middle_row = (p2 - p0) * 0.5; // the screen's middle row, drawn over the rays
+    draw_line(frame, p0 + to_middle_row, p1 + to_middle_row, 0xffffff);
     draw_dot(frame, scene.light, 0xffff00);
     draw_dot(frame, eye, 0xffffff);
 }

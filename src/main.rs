@@ -137,7 +137,7 @@ impl Shape {
                 let to_center = center - ray.origin;
                 let t_center = to_center.dot(ray.direction);
                 let p2 = to_center.dot(to_center) - t_center * t_center;
-                if p2 > radius * radius {
+                if p2 >= radius * radius {
                     return None;
                 }
                 let half_chord = (radius * radius - p2).sqrt();

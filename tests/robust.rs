@@ -222,6 +222,25 @@ fn odd_scenes_render_valid_frames() {
         assert_valid_frame(&scene, &Camera::default(), case);
         assert_valid_rays(&scene, &Camera::default(), case);
     }
+    // A ray aimed exactly at the centre of a radius-0 sphere passes it: no hit, no NaN normal.
+    let point = (
+        Shape::Sphere {
+            center: vec3(0.0, 0.0, -3.0),
+            radius: 0.0,
+        },
+        white(0.0),
+    );
+    let scene = Scene {
+        objects: vec![point],
+        light,
+        sky,
+    };
+    let color = scene.trace(
+        &Ray::new(vec3(0.0, 0.0, 0.0), vec3(0.0, 0.0, -1.0)),
+        0,
+        &mut 0,
+    );
+    assert_eq!(color, sky);
     let empty = Scene {
         objects: vec![],
         light,

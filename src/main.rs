@@ -310,7 +310,7 @@ fn draw_dot(frame: &mut [u32], point: Vec3, color: u32) {
 
 /// A circle in the plane y = centre.y, a dot per map pixel along it (none for a NaN radius).
 fn draw_circle(frame: &mut [u32], center: Vec3, radius: f64, color: u32) {
-    let dots = (TAU * radius * MAP_SCALE).min(1e5) as usize;
+    let dots = ((TAU * radius * MAP_SCALE) as usize).min(100_000);
     for angle in (0..dots).map(|i| TAU * i as f64 / dots as f64) {
         plot(frame, center + direction(angle, 0.0) * radius, color);
     }

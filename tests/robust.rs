@@ -182,6 +182,10 @@ fn white(reflectivity: f64) -> Material {
     }
 }
 
+fn ball(center: Vec3, radius: f64, material: Material) -> (Shape, Material) {
+    (Shape::Sphere { center, radius }, material)
+}
+
 fn floor() -> (Shape, Material) {
     (
         Shape::Plane {
@@ -194,7 +198,6 @@ fn floor() -> (Shape, Material) {
 
 #[test]
 fn odd_scenes_render_valid_frames() {
-    let ball = |center, radius, material| (Shape::Sphere { center, radius }, material);
     let sky = vec3(0.5, 0.7, 1.0);
     let light = vec3(0.0, 5.0, 0.0);
     let cases = [
@@ -223,13 +226,7 @@ fn odd_scenes_render_valid_frames() {
         assert_valid_rays(&scene, &Camera::default(), case);
     }
     // A ray aimed exactly at the centre of a radius-0 sphere passes it: no hit, no NaN normal.
-    let point = (
-        Shape::Sphere {
-            center: vec3(0.0, 0.0, -3.0),
-            radius: 0.0,
-        },
-        white(0.0),
-    );
+    let point = ball(vec3(0.0, 0.0, -3.0), 0.0, white(0.0));
     let scene = Scene {
         objects: vec![point],
         light,
@@ -258,13 +255,7 @@ fn odd_scenes_render_valid_frames() {
 
 #[test]
 fn a_light_inside_a_sphere_leaves_everything_else_in_shadow() {
-    let lamp = (
-        Shape::Sphere {
-            center: vec3(0.0, 2.0, -3.0),
-            radius: 0.5,
-        },
-        white(0.0),
-    );
+    let lamp = ball(vec3(0.0, 2.0, -3.0), 0.5, white(0.0));
     let scene = Scene {
         objects: vec![floor(), lamp],
         light: vec3(0.0, 2.0, -3.0),
@@ -285,13 +276,7 @@ fn a_light_inside_a_sphere_leaves_everything_else_in_shadow() {
 
 #[test]
 fn facing_mirrors_stop_at_the_maximum_depth() {
-    let mirror_ball = (
-        Shape::Sphere {
-            center: vec3(0.0, 1.0, -3.0),
-            radius: 1.0,
-        },
-        white(1.0),
-    );
+    let mirror_ball = ball(vec3(0.0, 1.0, -3.0), 1.0, white(1.0));
     let mirror_floor = (
         Shape::Plane {
             normal: vec3(0.0, 1.0, 0.0),

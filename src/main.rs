@@ -2,9 +2,7 @@
 //! shadows and mirror reflections, and beside the 3D view a top-down 2D slice of the scene.
 use minifb::{Key, Window, WindowOptions};
 use std::f64::consts::{FRAC_PI_2, TAU};
-use std::ops::{Add, Mul, Sub};
-use std::sync::{Mutex, atomic::AtomicU64, atomic::Ordering::Relaxed};
-use std::time::Instant;
+use std::{ops, sync::Mutex, time::Instant};
 
 pub const VIEW: usize = 512; // each half of the window is VIEW x VIEW pixels
 pub const WIDTH: usize = 2 * VIEW; // a row of the frame: the 3D view, then the 2D slice
@@ -38,7 +36,7 @@ impl Vec3 {
 
 macro_rules! componentwise {
     ($trait:ident, $method:ident, $op:tt) => {
-        impl $trait for Vec3 {
+        impl ops::$trait for Vec3 {
             type Output = Vec3;
             fn $method(self, other: Vec3) -> Vec3 {
                 vec3(self.x $op other.x, self.y $op other.y, self.z $op other.z)
@@ -49,7 +47,7 @@ macro_rules! componentwise {
 componentwise!(Add, add, +);
 componentwise!(Sub, sub, -);
 
-impl Mul<f64> for Vec3 {
+impl ops::Mul<f64> for Vec3 {
     type Output = Vec3;
     fn mul(self, scale: f64) -> Vec3 {
         vec3(self.x * scale, self.y * scale, self.z * scale)
@@ -95,19 +93,21 @@ impl Camera {
         let center = self.position + direction(self.yaw, self.pitch);
         let right = direction(self.yaw - FRAC_PI_2, 0.0);
         let up = direction(self.yaw, self.pitch + FRAC_PI_2);
-        let top_left = center - right + up;
-        [top_left, top_left + right * 2.0, top_left - up * 2.0]
+        [
+            center - right + up,
+            center + right + up,
+            center - right - up,
+        ]
     }
     /// The primary ray through the centre of pixel (x, y) of the 3D view, row 0 at the top.
     pub fn primary_ray(&self, [p0, p1, p2]: [Vec3; 3], x: usize, y: usize) -> Ray {
-        let u = (x as f64 + 0.5) / VIEW as f64;
-        let v = (y as f64 + 0.5) / VIEW as f64;
+        let [u, v] = [x, y].map(|pixel| (pixel as f64 + 0.5) / VIEW as f64);
         let on_screen = p0 + (p1 - p0) * u + (p2 - p0) * v;
         Ray::new(self.position, on_screen - self.position)
     }
 }
 
-// Primitives: the sphere (p - C).(p - C) = r² and the plane p.N + d = 0, each with a material.
+// Primitives: the sphere |p - C|² = r² and the plane p.N + d = 0, each with a material.
 #[derive(Clone, Copy, Debug)]
 pub enum Shape {
     Sphere { center: Vec3, radius: f64 },
@@ -118,7 +118,7 @@ pub enum Shape {
 pub struct Material {
     pub color: Vec3,
     pub reflectivity: f64, // 0 is matte, 1 a perfect mirror
-    pub checkered: bool,
+    pub checkered: bool,   // the checkerboard: darker where floor(x) + floor(z) is odd
 }
 
 impl Shape {
@@ -145,20 +145,6 @@ impl Shape {
             }
         }
     }
-    pub fn normal_at(&self, point: Vec3) -> Vec3 {
-        match *self {
-            Shape::Sphere { center, radius } => (point - center) * (1.0 / radius),
-            Shape::Plane { normal, .. } => normal,
-        }
-    }
-}
-
-impl Material {
-    /// The checkerboard F(x, z): unit squares, darker where floor(x) + floor(z) is odd.
-    pub fn color_at(&self, point: Vec3) -> Vec3 {
-        let odd = (point.x.floor() as i64 + point.z.floor() as i64) & 1 == 1;
-        self.color * if self.checkered && odd { 0.25 } else { 1.0 }
-    }
 }
 
 // The scene: the objects, one point light and a flat sky.
@@ -177,21 +163,18 @@ impl Default for Scene {
             reflectivity,
             checkered,
         };
-        let floor = Shape::Plane {
-            normal: vec3(0.0, 1.0, 0.0),
-            offset: 1.0,
-        };
-        let mut objects = vec![(floor, material(vec3(0.9, 0.9, 0.9), 0.0, true))];
-        for (x, y, z, radius, color, reflectivity) in [
-            (0.3, 0.0, -4.5, 1.0, vec3(0.9, 0.9, 0.9), 0.85),
-            (-2.0, -0.2, -4.2, 0.8, vec3(0.9, 0.2, 0.2), 0.0),
-            (1.9, -0.4, -3.4, 0.6, vec3(0.2, 0.8, 0.3), 0.0),
-            (-0.9, -0.45, -2.6, 0.55, vec3(0.2, 0.4, 0.9), 0.0),
-        ] {
-            let center = vec3(x, y, z);
+        let ball = |center, radius, color, reflectivity| {
             let sphere = Shape::Sphere { center, radius };
-            objects.push((sphere, material(color, reflectivity, false)));
-        }
+            (sphere, material(color, reflectivity, false))
+        };
+        let (normal, offset, white) = (vec3(0.0, 1.0, 0.0), 1.0, vec3(0.9, 0.9, 0.9));
+        let objects = vec![
+            (Shape::Plane { normal, offset }, material(white, 0.0, true)),
+            ball(vec3(0.3, 0.0, -4.5), 1.0, white, 0.85),
+            ball(vec3(-2.0, -0.2, -4.2), 0.8, vec3(0.9, 0.2, 0.2), 0.0),
+            ball(vec3(1.9, -0.4, -3.4), 0.6, vec3(0.2, 0.8, 0.3), 0.0),
+            ball(vec3(-0.9, -0.45, -2.6), 0.55, vec3(0.2, 0.4, 0.9), 0.0),
+        ];
         let (light, sky) = (vec3(-3.0, 5.0, 1.0), vec3(0.5, 0.7, 1.0));
         Scene {
             objects,
@@ -210,40 +193,42 @@ impl Scene {
             .filter_map(|(shape, material)| Some((shape.intersect(ray)?, shape, material)))
             .min_by(|a, b| a.0.total_cmp(&b.0))?;
         let point = ray.at(t);
-        let normal = shape.normal_at(point); // turned below to face the ray
-        let facing = normal * -normal.dot(ray.direction).signum();
+        let normal = match *shape {
+            Shape::Sphere { center, radius } => (point - center) * (1.0 / radius),
+            Shape::Plane { normal, .. } => normal,
+        };
+        let facing = normal * -normal.dot(ray.direction).signum(); // the side the ray comes from
         Some((point, facing, material))
     }
 
-    /// The shadow ray: does an object lie between its origin and the light? Counts the ray.
-    pub fn in_shadow(&self, ray: &Ray, distance: f64, rays: &mut u64) -> bool {
-        *rays += 1;
-        (self.objects.iter()).any(|(shape, _)| shape.intersect(ray).is_some_and(|t| t < distance))
-    }
-
-    /// The colour a ray brings back; `rays` counts every ray traced.
+    /// The colour a ray brings back; `rays` counts every ray traced, shadow rays too.
     pub fn trace(&self, ray: &Ray, depth: u32, rays: &mut u64) -> Vec3 {
         *rays += 1;
         let Some((point, normal, material)) = self.nearest_hit(ray) else {
             return self.sky;
         };
-        let distance = (self.light - point).length();
-        let to_light = Ray {
-            origin: point,
-            direction: (self.light - point) * (1.0 / distance),
-        };
+        let to_light = Ray::new(point, self.light - point);
         let facing_light = normal.dot(to_light.direction);
         let mut brightness = AMBIENT;
-        if facing_light > 0.0 && !self.in_shadow(&to_light, distance, rays) {
+        if facing_light > 0.0 && !self.in_shadow(&to_light, rays) {
             brightness += (1.0 - AMBIENT) * facing_light;
         }
-        let color = material.color_at(point) * brightness;
+        let odd = (point.x.floor() as i64 + point.z.floor() as i64) & 1 == 1;
+        let checker = if material.checkered && odd { 0.25 } else { 1.0 };
+        let color = material.color * (checker * brightness);
         if material.reflectivity <= 0.0 || depth >= MAX_DEPTH {
             return color;
         }
         let mirror = Ray::new(point, reflect(ray.direction, normal));
         let mirrored = self.trace(&mirror, depth + 1, rays);
         color * (1.0 - material.reflectivity) + mirrored * material.reflectivity
+    }
+
+    /// Does an object lie between the shadow ray's origin and the light?
+    fn in_shadow(&self, ray: &Ray, rays: &mut u64) -> bool {
+        *rays += 1;
+        let distance = (self.light - ray.origin).length();
+        (self.objects.iter()).any(|(shape, _)| shape.intersect(ray).is_some_and(|t| t < distance))
     }
 }
 
@@ -252,14 +237,8 @@ pub fn reflect(direction: Vec3, normal: Vec3) -> Vec3 {
     direction - normal * (2.0 * direction.dot(normal))
 }
 
-/// A colour as a 0RGB pixel, each channel clamped to [0, 1] (NaN to 0).
-pub fn to_rgb(color: Vec3) -> u32 {
-    let byte = |channel: f64| ((channel * 255.0) as u32).min(255);
-    byte(color.x) << 16 | byte(color.y) << 8 | byte(color.z)
-}
-
-// Rendering a 1024x512 frame: the 3D view on the left, the 2D slice on the right.
-/// Renders the whole frame on all cores and returns the number of rays traced.
+// Rendering a 1024x512 frame: the 3D view on the left on all cores, the 2D slice on the right.
+/// Renders the whole frame and returns the number of rays traced.
 pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) -> u64 {
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     let rays = render_view(scene, camera, frame, threads);
@@ -272,22 +251,27 @@ pub fn render_view(scene: &Scene, camera: &Camera, frame: &mut [u32], threads: u
     assert_eq!(frame.len(), WIDTH * VIEW, "a frame is 1024 x 512 pixels");
     let screen = camera.screen();
     let rows = Mutex::new(frame.chunks_mut(WIDTH).enumerate());
-    let rays = AtomicU64::new(0);
-    std::thread::scope(|scope| {
-        for _ in 0..threads {
-            scope.spawn(|| {
-                let mut count = 0;
-                for (y, row) in std::iter::from_fn(|| rows.lock().unwrap().next()) {
-                    for (x, pixel) in row[..VIEW].iter_mut().enumerate() {
-                        let ray = camera.primary_ray(screen, x, y);
-                        *pixel = to_rgb(scene.trace(&ray, 0, &mut count));
-                    }
-                }
-                rays.fetch_add(count, Relaxed);
-            });
+    let trace_rows = || {
+        let mut rays = 0;
+        for (y, row) in std::iter::from_fn(|| rows.lock().unwrap().next()) {
+            for (x, pixel) in row[..VIEW].iter_mut().enumerate() {
+                let ray = camera.primary_ray(screen, x, y);
+                *pixel = to_rgb(scene.trace(&ray, 0, &mut rays));
+            }
         }
-    });
-    rays.into_inner()
+        rays
+    };
+    std::thread::scope(|scope| {
+        let workers: Vec<_> = (0..threads).map(|_| scope.spawn(trace_rows)).collect();
+        let counts = workers.into_iter().map(|worker| worker.join().unwrap());
+        counts.sum()
+    })
+}
+
+/// A colour as a 0RGB pixel, each channel clamped to [0, 1].
+pub fn to_rgb(color: Vec3) -> u32 {
+    let byte = |channel: f64| (channel.min(1.0) * 255.0) as u32; // `as` takes negatives to 0
+    byte(color.x) << 16 | byte(color.y) << 8 | byte(color.z)
 }
 
 // The 2D slice: the plane at the eye's height seen from above, x to the right and -z up.
@@ -301,29 +285,22 @@ fn plot(frame: &mut [u32], point: Vec3, color: u32) {
     }
 }
 
+/// A dot of 5 x 5 map pixels.
 fn draw_dot(frame: &mut [u32], point: Vec3, color: u32) {
-    for (dx, dz) in (-2..=2).flat_map(|dx| (-2..=2).map(move |dz| (dx, dz))) {
-        let offset = vec3(dx as f64, 0.0, dz as f64) * (1.0 / MAP_SCALE);
-        plot(frame, point + offset, color);
+    for i in 0..25 {
+        let offset = vec3((i % 5) as f64 - 2.0, 0.0, (i / 5) as f64 - 2.0);
+        plot(frame, point + offset * (1.0 / MAP_SCALE), color);
     }
 }
 
-/// A circle in the plane y = centre.y, a dot per map pixel along it (none for a NaN radius).
-fn draw_circle(frame: &mut [u32], center: Vec3, radius: f64, color: u32) {
-    let dots = ((TAU * radius * MAP_SCALE) as usize).min(100_000);
-    for angle in (0..dots).map(|i| TAU * i as f64 / dots as f64) {
-        plot(frame, center + direction(angle, 0.0) * radius, color);
-    }
-}
-
-/// The part of a segment on the map, clipped to the map's edges, a dot per pixel along it.
+/// A segment as a dot per map pixel, clipped to the map's edges first: far ends cost nothing.
 fn draw_line(frame: &mut [u32], from: Vec3, to: Vec3, color: u32) {
     let (mut enter, mut leave) = (0.0f64, 1.0f64);
     for (start, end, edge) in [(from.x, to.x, MAP_CORNER.x), (from.z, to.z, MAP_CORNER.z)] {
         let [t0, t1] = [edge, edge + VIEW as f64 / MAP_SCALE].map(|e| (e - start) / (end - start));
         (enter, leave) = (enter.max(t0.min(t1)), leave.min(t0.max(t1)));
     }
-    let dots = ((to - from).length() * MAP_SCALE * (leave - enter)).ceil() as usize; // 0: off the map
+    let dots = ((to - from).length() * MAP_SCALE * (leave - enter)).ceil() as usize;
     for t in (0..dots).map(|i| enter + (leave - enter) * (i as f64 + 0.5) / dots as f64) {
         plot(frame, from + (to - from) * t, color);
     }
@@ -336,11 +313,15 @@ pub fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
         row[VIEW..].fill(0x202020);
     }
     let eye = camera.position;
-    for &(shape, material) in &scene.objects {
-        if let Shape::Sphere { center, radius } = shape {
-            // Where the sphere cuts the plane y = eye.y: a circle of radius² = r² - (C.y - eye.y)².
+    for (shape, material) in &scene.objects {
+        if let Shape::Sphere { center, radius } = *shape {
+            // It cuts the plane y = eye.y in a circle of radius² = r² - (C.y - eye.y)², drawn as
+            // 64 segments (none for a NaN radius: the sphere misses the plane).
             let cut = (radius * radius - (center.y - eye.y).powi(2)).sqrt();
-            draw_circle(frame, center, cut, to_rgb(material.color));
+            let around = |i: u32| center + direction(TAU * i as f64 / 64.0, 0.0) * cut;
+            for i in 0..64 {
+                draw_line(frame, around(i), around(i + 1), to_rgb(material.color));
+            }
         }
     }
     let screen @ [p0, p1, p2] = camera.screen();
@@ -438,11 +419,8 @@ fn screenshot(path: &str) {
     let mut frame = vec![0; WIDTH * VIEW];
     render(&Scene::default(), &Camera::default(), &mut frame);
     let mut ppm = format!("P6\n{WIDTH} {VIEW}\n255\n").into_bytes();
-    ppm.extend(
-        frame
-            .iter()
-            .flat_map(|pixel| [16, 8, 0].map(|shift| (pixel >> shift) as u8)),
-    );
+    let red_green_blue = |pixel: &u32| pixel.to_be_bytes().into_iter().skip(1);
+    ppm.extend(frame.iter().flat_map(red_green_blue));
     let written = std::fs::write(path, ppm);
     written.unwrap_or_else(|error| exit_with(1, &format!("cannot write {path}: {error}")));
 }

@@ -213,7 +213,7 @@ impl Scene {
         if facing_light > 0.0 && !self.in_shadow(&to_light, rays) {
             brightness += (1.0 - AMBIENT) * facing_light;
         }
-        let odd = (point.x.floor() as i64 + point.z.floor() as i64) & 1 == 1;
+        let odd = (floor(point.x) + floor(point.z)) & 1 == 1;
         let checker = if material.checkered && odd { 0.25 } else { 1.0 };
         let color = material.color * (checker * brightness);
         if material.reflectivity <= 0.0 || depth >= MAX_DEPTH {
@@ -235,6 +235,13 @@ impl Scene {
 /// The mirror direction R = D - 2(D.N)N.
 pub fn reflect(direction: Vec3, normal: Vec3) -> Vec3 {
     direction - normal * (2.0 * direction.dot(normal))
+}
+
+/// floor(w) as an integer: the cast rounds towards zero, one too high for negative fractions.
+/// (f64::floor is a library call on the x86-64 baseline, about 5% of a frame's instructions.)
+pub fn floor(w: f64) -> i64 {
+    let towards_zero = w as i64;
+    towards_zero - (w < towards_zero as f64) as i64
 }
 
 // Rendering a 1024x512 frame: the 3D view on the left on all cores, the 2D slice on the right.

@@ -26,6 +26,14 @@ impl Vec3 {
     pub fn dot(self, other: Vec3) -> f64 {
         self.x * other.x + self.y * other.y + self.z * other.z
     }
+    pub fn cross(self, other: Vec3) -> Vec3 {
+        let (a, b) = (self, other);
+        vec3(
+            a.y * b.z - a.z * b.y,
+            a.z * b.x - a.x * b.z,
+            a.x * b.y - a.y * b.x,
+        )
+    }
     pub fn length(self) -> f64 {
         self.dot(self).sqrt()
     }
@@ -148,9 +156,11 @@ impl Shape {
 }
 
 // The scene: the objects, one point light and a flat sky.
+pub type Object = (Shape, Material);
+
 #[derive(Clone, Debug)]
 pub struct Scene {
-    pub objects: Vec<(Shape, Material)>,
+    pub objects: Vec<Object>,
     pub light: Vec3,
     pub sky: Vec3,
 }
@@ -186,25 +196,26 @@ impl Default for Scene {
 
 // Shading: colour = surface × (ambient + N.L where the shadow ray reaches the light), mixed by
 // the reflectivity with the colour the mirror ray R = D - 2(D.N)N brings back.
-impl Scene {
-    /// The nearest hit: its point, the unit normal turned to face the ray, and the material.
-    pub fn nearest_hit(&self, ray: &Ray) -> Option<(Vec3, Vec3, &Material)> {
-        let (t, shape, material) = (self.objects.iter())
-            .filter_map(|(shape, material)| Some((shape.intersect(ray)?, shape, material)))
-            .min_by(|a, b| a.0.total_cmp(&b.0))?;
-        let point = ray.at(t);
-        let normal = match *shape {
-            Shape::Sphere { center, radius } => (point - center) * (1.0 / radius),
-            Shape::Plane { normal, .. } => normal,
-        };
-        let facing = normal * -normal.dot(ray.direction).signum(); // the side the ray comes from
-        Some((point, facing, material))
-    }
+/// The nearest hit among `objects`: its point, the unit normal facing the ray, its material.
+pub fn nearest_hit<'a>(objects: &'a [Object], ray: &Ray) -> Option<(Vec3, Vec3, &'a Material)> {
+    let (t, shape, material) = (objects.iter())
+        .filter_map(|(shape, material)| Some((shape.intersect(ray)?, shape, material)))
+        .min_by(|a, b| a.0.total_cmp(&b.0))?;
+    let point = ray.at(t);
+    let normal = match *shape {
+        Shape::Sphere { center, radius } => (point - center) * (1.0 / radius),
+        Shape::Plane { normal, .. } => normal,
+    };
+    let facing = normal * -normal.dot(ray.direction).signum(); // the side the ray comes from
+    Some((point, facing, material))
+}
 
-    /// The colour a ray brings back; `rays` counts every ray traced, shadow rays too.
-    pub fn trace(&self, ray: &Ray, depth: u32, rays: &mut u64) -> Vec3 {
+impl Scene {
+    /// The colour a ray brings back, its first hit looked for among `objects` (all of the scene's,
+    /// or those its row can reach); `rays` counts every ray traced, shadow rays too.
+    pub fn trace(&self, ray: &Ray, objects: &[Object], depth: u32, rays: &mut u64) -> Vec3 {
         *rays += 1;
-        let Some((point, normal, material)) = self.nearest_hit(ray) else {
+        let Some((point, normal, material)) = nearest_hit(objects, ray) else {
             return self.sky;
         };
         let to_light = Ray::new(point, self.light - point);
@@ -220,7 +231,7 @@ impl Scene {
             return color;
         }
         let mirror = Ray::new(point, reflect(ray.direction, normal));
-        let mirrored = self.trace(&mirror, depth + 1, rays);
+        let mirrored = self.trace(&mirror, &self.objects, depth + 1, rays);
         color * (1.0 - material.reflectivity) + mirrored * material.reflectivity
     }
 
@@ -261,9 +272,10 @@ pub fn render_view(scene: &Scene, camera: &Camera, frame: &mut [u32], threads: u
     let trace_rows = || {
         let mut rays = 0;
         for (y, row) in std::iter::from_fn(|| rows.lock().unwrap().next()) {
+            let reachable = row_objects(scene, camera, screen, y);
             for (x, pixel) in row[..VIEW].iter_mut().enumerate() {
                 let ray = camera.primary_ray(screen, x, y);
-                *pixel = to_rgb(scene.trace(&ray, 0, &mut rays));
+                *pixel = to_rgb(scene.trace(&ray, &reachable, 0, &mut rays));
             }
         }
         rays
@@ -273,6 +285,21 @@ pub fn render_view(scene: &Scene, camera: &Camera, frame: &mut [u32], threads: u
         let counts = workers.into_iter().map(|worker| worker.join().unwrap());
         counts.sum()
     })
+}
+
+/// The objects a row's primary rays can hit. The rays fan out in one plane through the eye, so
+/// a sphere further than r from that plane is missed by all of them: most rays test 1 or 2 spheres.
+pub fn row_objects(scene: &Scene, camera: &Camera, screen: [Vec3; 3], y: usize) -> Vec<Object> {
+    let first = camera.primary_ray(screen, 0, y).direction;
+    let last = camera.primary_ray(screen, VIEW - 1, y).direction;
+    let normal = first.cross(last).normalize();
+    let reachable = |(shape, _): &&Object| match *shape {
+        Shape::Sphere { center, radius } => {
+            (center - camera.position).dot(normal).abs() < radius + EPSILON
+        }
+        Shape::Plane { .. } => true,
+    };
+    scene.objects.iter().filter(reachable).copied().collect()
 }
 
 /// A colour as a 0RGB pixel, each channel clamped to [0, 1].
@@ -334,7 +361,7 @@ pub fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     let screen @ [p0, p1, p2] = camera.screen();
     for x in (0..VIEW).step_by(10) {
         let ray = camera.primary_ray(screen, x, VIEW / 2);
-        let Some((point, normal, material)) = scene.nearest_hit(&ray) else {
+        let Some((point, normal, material)) = nearest_hit(&scene.objects, &ray) else {
             draw_line(frame, eye, ray.at(FAR), 0x808080);
             continue;
         };
@@ -342,7 +369,7 @@ pub fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
         draw_line(frame, point, scene.light, 0x606060);
         if material.reflectivity > 0.0 {
             let mirror = Ray::new(point, reflect(ray.direction, normal));
-            let bounce = scene.nearest_hit(&mirror).map(|hit| hit.0);
+            let bounce = nearest_hit(&scene.objects, &mirror).map(|hit| hit.0);
             let bounce = bounce.unwrap_or(mirror.at(FAR));
             draw_line(frame, point, bounce, 0x40c0ff);
         }

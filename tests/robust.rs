@@ -109,7 +109,7 @@ fn assert_valid_rays(scene: &Scene, camera: &Camera, case: &str) {
         .flat_map(|x| (0..VIEW).step_by(61).map(move |y| (x, y)))
     {
         let ray = camera.primary_ray(screen, x, y);
-        let color = scene.trace(&ray, 0, &mut 0);
+        let color = scene.trace(&ray, &scene.objects, 0, &mut 0);
         assert!(valid(color), "{case}: pixel {x}, {y} is {color:?}");
     }
 }
@@ -128,6 +128,32 @@ fn a_thousand_camera_poses_and_hundreds_of_random_scenes() {
         assert_valid_rays(&scene, &camera, &case);
         if seed % 60 == 0 {
             assert_valid_frame(&scene, &camera, &case);
+        }
+    }
+}
+
+/// The 3D view traces each row against only the spheres that its plane of rays comes within r
+/// of; tracing every pixel against all objects must give the same picture, from any pose.
+#[test]
+fn leaving_out_the_spheres_a_row_cannot_reach_changes_no_pixel() {
+    for seed in 1..=24u64 {
+        let mut random = Random(seed.wrapping_mul(0x2545_f491_4f6c_dd1d));
+        let scene = if seed % 2 == 0 {
+            random_scene(&mut random)
+        } else {
+            Scene::default()
+        };
+        let camera = random_camera(&mut random);
+        let mut frame = vec![0; WIDTH * VIEW];
+        render_view(&scene, &camera, &mut frame, 2);
+        let screen = camera.screen();
+        for (y, row) in frame.chunks(WIDTH).enumerate() {
+            for (x, &pixel) in row[..VIEW].iter().enumerate() {
+                let ray = camera.primary_ray(screen, x, y);
+                let every_object = to_rgb(scene.trace(&ray, &scene.objects, 0, &mut 0));
+                let case = || format!("seed {seed}: pixel {x}, {y} of {camera:?} in {scene:?}");
+                assert_eq!(pixel, every_object, "{}", case());
+            }
         }
     }
 }
@@ -234,6 +260,7 @@ fn odd_scenes_render_valid_frames() {
     };
     let color = scene.trace(
         &Ray::new(vec3(0.0, 0.0, 0.0), vec3(0.0, 0.0, -1.0)),
+        &scene.objects,
         0,
         &mut 0,
     );
@@ -265,7 +292,7 @@ fn a_light_inside_a_sphere_leaves_everything_else_in_shadow() {
     let screen = camera.screen();
     for y in (0..VIEW).step_by(8) {
         for x in (0..VIEW).step_by(8) {
-            let color = scene.trace(&camera.primary_ray(screen, x, y), 0, &mut 0);
+            let color = scene.trace(&camera.primary_ray(screen, x, y), &scene.objects, 0, &mut 0);
             assert!(
                 color.x <= AMBIENT + 1e-9,
                 "pixel {x}, {y} is lit: {color:?}"
@@ -292,7 +319,7 @@ fn facing_mirrors_stop_at_the_maximum_depth() {
     // Straight down from between the two: the ray bounces between floor and ball.
     let ray = Ray::new(vec3(0.0, -0.5, -3.0), vec3(0.0, -1.0, 0.0));
     let mut rays = 0;
-    let color = scene.trace(&ray, 0, &mut rays);
+    let color = scene.trace(&ray, &scene.objects, 0, &mut rays);
     assert!(valid(color));
     // One ray and at most one shadow ray per bounce, MAX_DEPTH bounces after the first.
     assert!(rays <= 2 * (MAX_DEPTH as u64 + 1), "{rays} rays");

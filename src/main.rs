@@ -256,24 +256,25 @@ pub fn floor(w: f64) -> i64 {
 }
 
 // Rendering a 1024x512 frame: the 3D view on the left on all cores, the 2D slice on the right.
-/// Renders the whole frame and returns the number of rays traced.
+/// Renders the whole frame on all cores and returns the number of rays traced.
 pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) -> u64 {
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let rays = render_view(scene, camera, frame, threads);
-    draw_slice(scene, camera, frame);
-    rays
+    render_on(scene, camera, frame, threads)
 }
 
-/// The 3D view, a primary ray per pixel; each thread takes the next row until none are left.
-pub fn render_view(scene: &Scene, camera: &Camera, frame: &mut [u32], threads: usize) -> u64 {
+/// The frame on `threads` threads: each takes the next row of the 3D view until none are left,
+/// this one after drawing the 2D slice.
+pub fn render_on(scene: &Scene, camera: &Camera, frame: &mut [u32], threads: usize) -> u64 {
     assert_eq!(frame.len(), WIDTH * VIEW, "a frame is 1024 x 512 pixels");
     let screen = camera.screen();
-    let rows = Mutex::new(frame.chunks_mut(WIDTH).enumerate());
+    let halves = frame.chunks_mut(WIDTH).map(|row| row.split_at_mut(VIEW));
+    let (view, mut map): (Vec<_>, Vec<_>) = halves.unzip();
+    let rows = Mutex::new(view.into_iter().enumerate());
     let trace_rows = || {
         let mut rays = 0;
         for (y, row) in std::iter::from_fn(|| rows.lock().unwrap().next()) {
             let reachable = row_objects(scene, camera, screen, y);
-            for (x, pixel) in row[..VIEW].iter_mut().enumerate() {
+            for (x, pixel) in row.iter_mut().enumerate() {
                 let ray = camera.primary_ray(screen, x, y);
                 *pixel = to_rgb(scene.trace(&ray, &reachable, 0, &mut rays));
             }
@@ -281,9 +282,10 @@ pub fn render_view(scene: &Scene, camera: &Camera, frame: &mut [u32], threads: u
         rays
     };
     std::thread::scope(|scope| {
-        let workers: Vec<_> = (0..threads).map(|_| scope.spawn(trace_rows)).collect();
+        let workers: Vec<_> = (1..threads).map(|_| scope.spawn(trace_rows)).collect();
+        draw_slice(scene, camera, &mut map);
         let counts = workers.into_iter().map(|worker| worker.join().unwrap());
-        counts.sum()
+        trace_rows() + counts.sum::<u64>()
     })
 }
 
@@ -312,23 +314,24 @@ pub fn to_rgb(color: Vec3) -> u32 {
 pub const MAP_CORNER: Vec3 = vec3(-6.4, 0.0, -9.4); // the world x and z at the map's top left
 pub const MAP_SCALE: f64 = 40.0; // map pixels per world unit
 
-fn plot(frame: &mut [u32], point: Vec3, color: u32) {
+/// Colours the map pixel under a world point; `map` holds the right half of each row.
+fn plot(map: &mut [&mut [u32]], point: Vec3, color: u32) {
     let [x, y] = [point.x - MAP_CORNER.x, point.z - MAP_CORNER.z].map(|w| w * MAP_SCALE);
     if (0.0..VIEW as f64).contains(&x) && (0.0..VIEW as f64).contains(&y) {
-        frame[y as usize * WIDTH + VIEW + x as usize] = color;
+        map[y as usize][x as usize] = color;
     }
 }
 
 /// A dot of 5 x 5 map pixels.
-fn draw_dot(frame: &mut [u32], point: Vec3, color: u32) {
+fn draw_dot(map: &mut [&mut [u32]], point: Vec3, color: u32) {
     for i in 0..25 {
         let offset = vec3((i % 5) as f64 - 2.0, 0.0, (i / 5) as f64 - 2.0);
-        plot(frame, point + offset * (1.0 / MAP_SCALE), color);
+        plot(map, point + offset * (1.0 / MAP_SCALE), color);
     }
 }
 
 /// A segment as a dot per map pixel, clipped to the map's edges first: far ends cost nothing.
-fn draw_line(frame: &mut [u32], from: Vec3, to: Vec3, color: u32) {
+fn draw_line(map: &mut [&mut [u32]], from: Vec3, to: Vec3, color: u32) {
     let (mut enter, mut leave) = (0.0f64, 1.0f64);
     for (start, end, edge) in [(from.x, to.x, MAP_CORNER.x), (from.z, to.z, MAP_CORNER.z)] {
         let [t0, t1] = [edge, edge + VIEW as f64 / MAP_SCALE].map(|e| (e - start) / (end - start));
@@ -336,15 +339,15 @@ fn draw_line(frame: &mut [u32], from: Vec3, to: Vec3, color: u32) {
     }
     let dots = ((to - from).length() * MAP_SCALE * (leave - enter)).ceil() as usize;
     for t in (0..dots).map(|i| enter + (leave - enter) * (i as f64 + 0.5) / dots as f64) {
-        plot(frame, from + (to - from) * t, color);
+        plot(map, from + (to - from) * t, color);
     }
 }
 
 /// The right half: spheres, screen, every 10th ray of the middle row with its hit, light, camera.
-pub fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
+pub fn draw_slice(scene: &Scene, camera: &Camera, map: &mut [&mut [u32]]) {
     const FAR: f64 = 1e6; // where a ray that hits nothing is drawn to: past the map's edge
-    for row in frame.chunks_mut(WIDTH) {
-        row[VIEW..].fill(0x202020);
+    for row in map.iter_mut() {
+        row.fill(0x202020);
     }
     let eye = camera.position;
     for (shape, material) in &scene.objects {
@@ -354,7 +357,7 @@ pub fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
             let cut = (radius * radius - (center.y - eye.y).powi(2)).sqrt();
             let around = |i: u32| center + direction(TAU * i as f64 / 64.0, 0.0) * cut;
             for i in 0..64 {
-                draw_line(frame, around(i), around(i + 1), to_rgb(material.color));
+                draw_line(map, around(i), around(i + 1), to_rgb(material.color));
             }
         }
     }
@@ -362,23 +365,23 @@ pub fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     for x in (0..VIEW).step_by(10) {
         let ray = camera.primary_ray(screen, x, VIEW / 2);
         let Some((point, normal, material)) = nearest_hit(&scene.objects, &ray) else {
-            draw_line(frame, eye, ray.at(FAR), 0x808080);
+            draw_line(map, eye, ray.at(FAR), 0x808080);
             continue;
         };
-        draw_line(frame, eye, point, 0xc0c040);
-        draw_line(frame, point, scene.light, 0x606060);
+        draw_line(map, eye, point, 0xc0c040);
+        draw_line(map, point, scene.light, 0x606060);
         if material.reflectivity > 0.0 {
             let mirror = Ray::new(point, reflect(ray.direction, normal));
             let bounce = nearest_hit(&scene.objects, &mirror).map(|hit| hit.0);
             let bounce = bounce.unwrap_or(mirror.at(FAR));
-            draw_line(frame, point, bounce, 0x40c0ff);
+            draw_line(map, point, bounce, 0x40c0ff);
         }
-        draw_dot(frame, point, 0xff4040);
+        draw_dot(map, point, 0xff4040);
     }
     let to_middle_row = (p2 - p0) * 0.5; // the screen's middle row, drawn over the rays
-    draw_line(frame, p0 + to_middle_row, p1 + to_middle_row, 0xffffff);
-    draw_dot(frame, scene.light, 0xffff00);
-    draw_dot(frame, eye, 0xffffff);
+    draw_line(map, p0 + to_middle_row, p1 + to_middle_row, 0xffffff);
+    draw_dot(map, scene.light, 0xffff00);
+    draw_dot(map, eye, 0xffffff);
 }
 
 // The program: the window and its controls, or headless --bench and --screenshot.

@@ -345,8 +345,8 @@ fn the_slice_shows_the_camera_a_sphere_outline_and_a_sampled_ray() {
 fn one_thread_and_many_render_the_same_frame() {
     let (scene, camera) = (Scene::default(), Camera::default());
     let (mut one, mut many) = (vec![0; WIDTH * VIEW], vec![0; WIDTH * VIEW]);
-    let one_rays = render_view(&scene, &camera, &mut one, 1);
-    let many_rays = render_view(&scene, &camera, &mut many, 5);
+    let one_rays = render_on(&scene, &camera, &mut one, 1);
+    let many_rays = render_on(&scene, &camera, &mut many, 5);
     assert!(one == many && one_rays == many_rays);
 }
 

@@ -145,7 +145,7 @@ fn leaving_out_the_spheres_a_row_cannot_reach_changes_no_pixel() {
         };
         let camera = random_camera(&mut random);
         let mut frame = vec![0; WIDTH * VIEW];
-        render_view(&scene, &camera, &mut frame, 2);
+        render_on(&scene, &camera, &mut frame, 2);
         let screen = camera.screen();
         for (y, row) in frame.chunks(WIDTH).enumerate() {
             for (x, &pixel) in row[..VIEW].iter().enumerate() {

@@ -289,8 +289,9 @@ pub fn render_on(scene: &Scene, camera: &Camera, frame: &mut [u32], threads: usi
     })
 }
 
-/// The objects a row's primary rays can hit. The rays fan out in one plane through the eye, so
-/// a sphere further than r from that plane is missed by all of them: most rays test 1 or 2 spheres.
+/// The objects a row's primary rays can hit. They fan out in one plane through the eye, from the
+/// first ray to the last: a sphere further than r from that plane is missed by all of them, and a
+/// plane is hit only if the first or the last heads towards it (D.N and O.N + d of unlike signs).
 pub fn row_objects(scene: &Scene, camera: &Camera, screen: [Vec3; 3], y: usize) -> Vec<Object> {
     let first = camera.primary_ray(screen, 0, y).direction;
     let last = camera.primary_ray(screen, VIEW - 1, y).direction;
@@ -299,7 +300,10 @@ pub fn row_objects(scene: &Scene, camera: &Camera, screen: [Vec3; 3], y: usize) 
         Shape::Sphere { center, radius } => {
             (center - camera.position).dot(normal).abs() < radius + EPSILON
         }
-        Shape::Plane { .. } => true,
+        Shape::Plane { normal, offset } => {
+            let side = camera.position.dot(normal) + offset;
+            first.dot(normal) * side < 0.0 || last.dot(normal) * side < 0.0
+        }
     };
     scene.objects.iter().filter(reachable).copied().collect()
 }

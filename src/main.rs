@@ -295,10 +295,11 @@ pub fn render_on(scene: &Scene, camera: &Camera, frame: &mut [u32], threads: usi
 pub fn row_objects(scene: &Scene, camera: &Camera, screen: [Vec3; 3], y: usize) -> Vec<Object> {
     let first = camera.primary_ray(screen, 0, y).direction;
     let last = camera.primary_ray(screen, VIEW - 1, y).direction;
-    let normal = first.cross(last).normalize();
+    let fan_normal = first.cross(last).normalize();
     let reachable = |(shape, _): &&Object| match *shape {
         Shape::Sphere { center, radius } => {
-            (center - camera.position).dot(normal).abs() < radius + EPSILON
+            let distance = (center - camera.position).dot(fan_normal).abs();
+            distance < radius + EPSILON // a little slack for rounding
         }
         Shape::Plane { normal, offset } => {
             let side = camera.position.dot(normal) + offset;

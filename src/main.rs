@@ -101,11 +101,8 @@ impl Camera {
         let center = self.position + direction(self.yaw, self.pitch);
         let right = direction(self.yaw - FRAC_PI_2, 0.0);
         let up = direction(self.yaw, self.pitch + FRAC_PI_2);
-        [
-            center - right + up,
-            center + right + up,
-            center - right - up,
-        ]
+        let (top, bottom) = (center + up, center - up);
+        [top - right, top + right, bottom - right]
     }
     /// The primary ray through the centre of pixel (x, y) of the 3D view, row 0 at the top.
     pub fn primary_ray(&self, [p0, p1, p2]: [Vec3; 3], x: usize, y: usize) -> Ray {

@@ -6,12 +6,12 @@ use std::{ops, sync::Mutex, time::Instant};
 
 pub const VIEW: usize = 512; // each half of the window is VIEW x VIEW pixels
 pub const WIDTH: usize = 2 * VIEW; // a row of the frame: the 3D view, then the 2D slice
-pub const EPSILON: f64 = 1e-6; // a hit closer than this is the surface the ray starts on
+const EPSILON: f64 = 1e-6; // a hit closer than this is the surface the ray starts on
 pub const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
 pub const AMBIENT: f64 = 0.1; // the light a surface gets even in shadow
 
 // Vector math: points, directions and colours (x, y, z = red, green, blue) are all a Vec3.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default)]
 pub struct Vec3 {
     pub x: f64,
     pub y: f64,
@@ -26,12 +26,11 @@ impl Vec3 {
     pub fn dot(self, other: Vec3) -> f64 {
         self.x * other.x + self.y * other.y + self.z * other.z
     }
-    pub fn cross(self, other: Vec3) -> Vec3 {
-        let (a, b) = (self, other);
+    fn cross(self, other: Vec3) -> Vec3 {
         vec3(
-            a.y * b.z - a.z * b.y,
-            a.z * b.x - a.x * b.z,
-            a.x * b.y - a.y * b.x,
+            self.y * other.z - self.z * other.y,
+            self.z * other.x - self.x * other.z,
+            self.x * other.y - self.y * other.x,
         )
     }
     pub fn length(self) -> f64 {
@@ -42,18 +41,19 @@ impl Vec3 {
     }
 }
 
-macro_rules! componentwise {
-    ($trait:ident, $method:ident, $op:tt) => {
-        impl ops::$trait for Vec3 {
-            type Output = Vec3;
-            fn $method(self, other: Vec3) -> Vec3 {
-                vec3(self.x $op other.x, self.y $op other.y, self.z $op other.z)
-            }
-        }
-    };
+impl ops::Add for Vec3 {
+    type Output = Vec3;
+    fn add(self, other: Vec3) -> Vec3 {
+        vec3(self.x + other.x, self.y + other.y, self.z + other.z)
+    }
 }
-componentwise!(Add, add, +);
-componentwise!(Sub, sub, -);
+
+impl ops::Sub for Vec3 {
+    type Output = Vec3;
+    fn sub(self, other: Vec3) -> Vec3 {
+        self + other * -1.0
+    }
+}
 
 impl ops::Mul<f64> for Vec3 {
     type Output = Vec3;
@@ -63,7 +63,6 @@ impl ops::Mul<f64> for Vec3 {
 }
 
 // The ray: p(t) = O + tD with t > 0 and D normalized.
-#[derive(Clone, Copy, Debug)]
 pub struct Ray {
     pub origin: Vec3,
     pub direction: Vec3,
@@ -74,42 +73,39 @@ impl Ray {
         let direction = towards.normalize();
         Ray { origin, direction }
     }
-    pub fn at(&self, t: f64) -> Vec3 {
-        self.origin + self.direction * t
-    }
 }
 
-// The camera: eye E, view direction V, screen centre C = E + dV with d = 1 (a 90 degree field of
-// view), corners p0 (top left), p1 (top right), p2 (bottom left), and for pixel (u, v) the point
-// p(u, v) = p0 + u(p1 - p0) + v(p2 - p0) and the primary ray D = p(u, v) - E.
-#[derive(Clone, Copy, Debug, Default)]
+// The camera: eye E, view V, screen centre C = E + V (d = 1: 90 degrees), corners p0 top left, p1
+// top right, p2 bottom left; p(u, v) = p0 + u(p1 - p0) + v(p2 - p0) and the ray D = p(u, v) - E.
+#[derive(Debug, Default)]
 pub struct Camera {
     pub position: Vec3,
     pub yaw: f64,   // radians about +y; positive turns the view left
-    pub pitch: f64, // radians; positive looks up, taken within +-90 degrees so the view never flips
+    pub pitch: f64, // radians; positive looks up
 }
 
 /// The unit vector for a yaw and a pitch; (0, 0) looks down -z.
-pub fn direction(yaw: f64, pitch: f64) -> Vec3 {
-    let (horizontal, y) = (pitch.cos(), pitch.sin());
-    vec3(-yaw.sin() * horizontal, y, -yaw.cos() * horizontal)
+fn direction(yaw: f64, pitch: f64) -> Vec3 {
+    let level = pitch.cos(); // the length of its horizontal part
+    vec3(-yaw.sin() * level, pitch.sin(), -yaw.cos() * level)
 }
 
 impl Camera {
-    /// The screen's corners [p0, p1, p2]: 1 to the right and 1 up from the centre.
+    /// The screen seen from the eye: p0 - E, p1 - p0 and p2 - p0.
     pub fn screen(&self) -> [Vec3; 3] {
-        let center = self.position + direction(self.yaw, self.pitch);
-        let right = direction(self.yaw - FRAC_PI_2, 0.0);
-        let up = direction(self.yaw, self.pitch + FRAC_PI_2);
-        let (top, bottom) = (center + up, center - up);
-        [top - right, top + right, bottom - right]
+        let right = direction(self.yaw - FRAC_PI_2, 0.0) * 2.0;
+        let down = direction(self.yaw, self.pitch - FRAC_PI_2) * 2.0;
+        let top_left = direction(self.yaw, self.pitch) - (right + down) * 0.5;
+        [top_left, right, down]
     }
-    /// The primary ray through the centre of pixel (x, y) of the 3D view, row 0 at the top.
-    pub fn primary_ray(&self, [p0, p1, p2]: [Vec3; 3], x: usize, y: usize) -> Ray {
-        let [u, v] = [x, y].map(|pixel| (pixel as f64 + 0.5) / VIEW as f64);
-        let on_screen = p0 + (p1 - p0) * u + (p2 - p0) * v;
-        Ray::new(self.position, on_screen - self.position)
+    pub fn primary_ray(&self, [top_left, right, down]: [Vec3; 3], u: f64, v: f64) -> Ray {
+        Ray::new(self.position, top_left + right * u + down * v)
     }
+}
+
+/// The centre of pixel `i` of a row or column of the 3D view, as a fraction of its width.
+fn pixel_center(i: usize) -> f64 {
+    (i as f64 + 0.5) / VIEW as f64
 }
 
 // Primitives: the sphere |p - C|² = r² and the plane p.N + d = 0, each with a material.
@@ -127,10 +123,9 @@ pub struct Material {
 }
 
 impl Shape {
-    /// The distance t to the nearest hit in front of the ray, if there is one.
-    #[inline] // called for every shape and every ray: the hottest code
-    pub fn intersect(&self, ray: &Ray) -> Option<f64> {
-        let ahead = |t: f64| (t > EPSILON && t < f64::INFINITY).then_some(t);
+    /// The distance t of the nearest hit in front of the ray and nearer than `max`, if any.
+    pub fn intersect(&self, ray: &Ray, max: f64) -> Option<f64> {
+        let ahead = |t: f64| (t > EPSILON && t < max).then_some(t);
         match *self {
             // t = -(O.N + d) / (D.N): infinite or NaN for a ray parallel to the plane, so no hit.
             Shape::Plane { normal, offset } => {
@@ -153,9 +148,9 @@ impl Shape {
 }
 
 // The scene: the objects, one point light and a flat sky.
-pub type Object = (Shape, Material);
+type Object = (Shape, Material);
 
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct Scene {
     pub objects: Vec<Object>,
     pub light: Vec3,
@@ -182,125 +177,101 @@ impl Default for Scene {
             ball(vec3(1.9, -0.4, -3.4), 0.6, vec3(0.2, 0.8, 0.3), 0.0),
             ball(vec3(-0.9, -0.45, -2.6), 0.55, vec3(0.2, 0.4, 0.9), 0.0),
         ];
-        let (light, sky) = (vec3(-3.0, 5.0, 1.0), vec3(0.5, 0.7, 1.0));
         Scene {
             objects,
-            light,
-            sky,
+            light: vec3(-3.0, 5.0, 1.0),
+            sky: vec3(0.5, 0.7, 1.0),
         }
     }
 }
 
 // Shading: colour = surface × (ambient + N.L where the shadow ray reaches the light), mixed by
 // the reflectivity with the colour the mirror ray R = D - 2(D.N)N brings back.
-/// The nearest hit among `objects`: its point, the unit normal facing the ray, its material.
-pub fn nearest_hit<'a>(objects: &'a [Object], ray: &Ray) -> Option<(Vec3, Vec3, &'a Material)> {
-    let (t, shape, material) = (objects.iter())
-        .filter_map(|(shape, material)| Some((shape.intersect(ray)?, shape, material)))
-        .min_by(|a, b| a.0.total_cmp(&b.0))?;
-    let point = ray.at(t);
+/// The nearest hit: its point, the unit normal facing the ray, its material.
+fn nearest_hit(objects: &[Object], ray: &Ray) -> Option<(Vec3, Vec3, Material)> {
+    let (mut t, mut nearest) = (f64::INFINITY, None);
+    for object in objects {
+        if let Some(hit) = object.0.intersect(ray, t) {
+            (t, nearest) = (hit, Some(object));
+        }
+    }
+    let (shape, material) = nearest?;
+    let point = ray.origin + ray.direction * t;
     let normal = match *shape {
         Shape::Sphere { center, radius } => (point - center) * (1.0 / radius),
         Shape::Plane { normal, .. } => normal,
     };
     let facing = normal * -normal.dot(ray.direction).signum(); // the side the ray comes from
-    Some((point, facing, material))
+    Some((point, facing, *material))
 }
 
 impl Scene {
-    /// The colour a ray brings back, its first hit looked for among `objects` (all of the scene's,
-    /// or those its row can reach); `rays` counts every ray traced, shadow rays too.
-    pub fn trace(&self, ray: &Ray, objects: &[Object], depth: u32, rays: &mut u64) -> Vec3 {
-        *rays += 1;
+    /// The colour a ray brings back, its first hit among `objects`, after `depth` mirror bounces.
+    pub fn trace(&self, ray: &Ray, objects: &[Object], depth: u32) -> Vec3 {
         let Some((point, normal, material)) = nearest_hit(objects, ray) else {
             return self.sky;
         };
-        let to_light = Ray::new(point, self.light - point);
-        let facing_light = normal.dot(to_light.direction);
+        // The shadow ray: lit when no object lies nearer than the light.
+        let to_light = self.light - point;
+        let distance = to_light.length();
+        let shadow_ray = Ray::new(point, to_light);
+        let facing_light = normal.dot(shadow_ray.direction);
         let mut brightness = AMBIENT;
-        if facing_light > 0.0 && !self.in_shadow(&to_light, rays) {
+        let blocked = |(shape, _): &Object| shape.intersect(&shadow_ray, distance).is_some();
+        if facing_light > 0.0 && !self.objects.iter().any(blocked) {
             brightness += (1.0 - AMBIENT) * facing_light;
         }
-        let odd = (floor(point.x) + floor(point.z)) & 1 == 1;
-        let checker = if material.checkered && odd { 0.25 } else { 1.0 };
-        let color = material.color * (checker * brightness);
+        let odd = material.checkered && (point.x.floor() + point.z.floor()) as i64 & 1 == 1;
+        let color = material.color * (brightness * if odd { 0.25 } else { 1.0 });
         if material.reflectivity <= 0.0 || depth >= MAX_DEPTH {
             return color;
         }
-        let mirror = Ray::new(point, reflect(ray.direction, normal));
-        let mirrored = self.trace(&mirror, &self.objects, depth + 1, rays);
+        let mirrored = self.trace(&reflect(ray, point, normal), &self.objects, depth + 1);
         color * (1.0 - material.reflectivity) + mirrored * material.reflectivity
     }
-
-    /// Does an object lie between the shadow ray's origin and the light?
-    fn in_shadow(&self, ray: &Ray, rays: &mut u64) -> bool {
-        *rays += 1;
-        let distance = (self.light - ray.origin).length();
-        (self.objects.iter()).any(|(shape, _)| shape.intersect(ray).is_some_and(|t| t < distance))
-    }
 }
 
-/// The mirror direction R = D - 2(D.N)N.
-pub fn reflect(direction: Vec3, normal: Vec3) -> Vec3 {
-    direction - normal * (2.0 * direction.dot(normal))
+/// The mirror ray from a hit: R = D - 2(D.N)N.
+fn reflect(ray: &Ray, point: Vec3, normal: Vec3) -> Ray {
+    let direction = ray.direction - normal * (2.0 * ray.direction.dot(normal));
+    Ray::new(point, direction)
 }
 
-/// floor(w) as an integer: the cast rounds towards zero, one too high for negative fractions.
-/// (f64::floor is a library call on the x86-64 baseline, about 5% of a frame's instructions.)
-pub fn floor(w: f64) -> i64 {
-    let towards_zero = w as i64;
-    towards_zero - (w < towards_zero as f64) as i64
-}
-
-// Rendering a 1024x512 frame: the 3D view on the left on all cores, the 2D slice on the right.
-/// Renders the whole frame on all cores and returns the number of rays traced.
-pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) -> u64 {
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-    render_on(scene, camera, frame, threads)
-}
-
-/// The frame on `threads` threads: each takes the next row of the 3D view until none are left,
-/// this one after drawing the 2D slice.
-pub fn render_on(scene: &Scene, camera: &Camera, frame: &mut [u32], threads: usize) -> u64 {
-    assert_eq!(frame.len(), WIDTH * VIEW, "a frame is 1024 x 512 pixels");
+// Rendering: the 3D view's rows dealt out to all cores, then the 2D slice beside them.
+/// Fills the whole 1024 x 512 frame of 0RGB pixels.
+pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     let screen = camera.screen();
-    let halves = frame.chunks_mut(WIDTH).map(|row| row.split_at_mut(VIEW));
-    let (view, mut map): (Vec<_>, Vec<_>) = halves.unzip();
-    let rows = Mutex::new(view.into_iter().enumerate());
-    let trace_rows = || {
-        let mut rays = 0;
-        for (y, row) in std::iter::from_fn(|| rows.lock().unwrap().next()) {
-            let reachable = row_objects(scene, camera, screen, y);
-            for (x, pixel) in row.iter_mut().enumerate() {
-                let ray = camera.primary_ray(screen, x, y);
-                *pixel = to_rgb(scene.trace(&ray, &reachable, 0, &mut rays));
-            }
-        }
-        rays
-    };
+    let rows = Mutex::new(frame.chunks_mut(WIDTH).enumerate());
+    let threads = std::thread::available_parallelism().map_or(1, usize::from);
     std::thread::scope(|scope| {
-        let workers: Vec<_> = (1..threads).map(|_| scope.spawn(trace_rows)).collect();
-        draw_slice(scene, camera, &mut map);
-        let counts = workers.into_iter().map(|worker| worker.join().unwrap());
-        trace_rows() + counts.sum::<u64>()
-    })
+        for _ in 0..threads {
+            scope.spawn(|| {
+                for (y, row) in std::iter::from_fn(|| rows.lock().unwrap().next()) {
+                    let ray = |u| camera.primary_ray(screen, u, pixel_center(y));
+                    let reachable = row_objects(scene, ray(0.0), ray(1.0));
+                    // The row's rays first: their square roots overlap instead of each stalling.
+                    let rays: Vec<Ray> = (0..VIEW).map(|x| ray(pixel_center(x))).collect();
+                    for (pixel, ray) in row.iter_mut().zip(&rays) {
+                        *pixel = to_rgb(scene.trace(ray, &reachable, 0));
+                    }
+                }
+            });
+        }
+    });
+    draw_slice(scene, camera, frame);
 }
 
-/// The objects a row's primary rays can hit. They fan out in one plane through the eye, from the
-/// first ray to the last: a sphere further than r from that plane is missed by all of them, and a
-/// plane is hit only if the first or the last heads towards it (D.N and O.N + d of unlike signs).
-pub fn row_objects(scene: &Scene, camera: &Camera, screen: [Vec3; 3], y: usize) -> Vec<Object> {
-    let first = camera.primary_ray(screen, 0, y).direction;
-    let last = camera.primary_ray(screen, VIEW - 1, y).direction;
-    let fan_normal = first.cross(last).normalize();
+/// The objects a row's rays can hit. They fan out in a plane from the first ray to the last: no
+/// sphere further than r from it, and a plane only if the first or the last heads towards it.
+fn row_objects(scene: &Scene, first: Ray, last: Ray) -> Vec<Object> {
+    let fan_normal = first.direction.cross(last.direction).normalize();
     let reachable = |(shape, _): &&Object| match *shape {
         Shape::Sphere { center, radius } => {
-            let distance = (center - camera.position).dot(fan_normal).abs();
-            distance < radius + EPSILON // a little slack for rounding
+            (center - first.origin).dot(fan_normal).abs() < radius + EPSILON // slack for rounding
         }
         Shape::Plane { normal, offset } => {
-            let side = camera.position.dot(normal) + offset;
-            first.dot(normal) * side < 0.0 || last.dot(normal) * side < 0.0
+            let height = first.origin.dot(normal) + offset;
+            height * first.direction.dot(normal) < 0.0 || height * last.direction.dot(normal) < 0.0
         }
     };
     scene.objects.iter().filter(reachable).copied().collect()
@@ -312,44 +283,43 @@ pub fn to_rgb(color: Vec3) -> u32 {
     byte(color.x) << 16 | byte(color.y) << 8 | byte(color.z)
 }
 
-// The 2D slice: the plane at the eye's height seen from above, x to the right and -z up.
+// The 2D slice: the plane through the eye and the screen's middle row, seen from above, x to the
+// right and -z up; every 10th ray of that row to its hit, its shadow ray and its reflection.
 pub const MAP_CORNER: Vec3 = vec3(-6.4, 0.0, -9.4); // the world x and z at the map's top left
 pub const MAP_SCALE: f64 = 40.0; // map pixels per world unit
 
-/// Colours the map pixel under a world point; `map` holds the right half of each row.
-fn plot(map: &mut [&mut [u32]], point: Vec3, color: u32) {
-    let [x, y] = [point.x - MAP_CORNER.x, point.z - MAP_CORNER.z].map(|w| w * MAP_SCALE);
-    if (0.0..VIEW as f64).contains(&x) && (0.0..VIEW as f64).contains(&y) {
-        map[y as usize][x as usize] = color;
+/// Colours the map pixel under a world point, if it is on the map.
+fn plot(frame: &mut [u32], point: Vec3, color: u32) {
+    let on_map = (point - MAP_CORNER) * MAP_SCALE;
+    if on_map.x.min(on_map.z) >= 0.0 && on_map.x.max(on_map.z) < VIEW as f64 {
+        frame[on_map.z as usize * WIDTH + VIEW + on_map.x as usize] = color;
     }
 }
 
-/// A dot of 5 x 5 map pixels.
-fn draw_dot(map: &mut [&mut [u32]], point: Vec3, color: u32) {
-    for i in 0..25 {
-        let offset = vec3((i % 5) as f64 - 2.0, 0.0, (i / 5) as f64 - 2.0);
-        plot(map, point + offset * (1.0 / MAP_SCALE), color);
+/// A dot every map pixel from `from` towards `to`, at most the map's diagonal: then it has left.
+fn draw_line(frame: &mut [u32], from: Vec3, to: Vec3, color: u32) {
+    let length = (to - from).length();
+    for i in 0..(length.min(18.2) * MAP_SCALE) as usize {
+        plot(
+            frame,
+            from + (to - from) * (i as f64 / MAP_SCALE / length),
+            color,
+        );
     }
 }
 
-/// A segment as a dot per map pixel, clipped to the map's edges first: far ends cost nothing.
-fn draw_line(map: &mut [&mut [u32]], from: Vec3, to: Vec3, color: u32) {
-    let (mut enter, mut leave) = (0.0f64, 1.0f64);
-    for (start, end, edge) in [(from.x, to.x, MAP_CORNER.x), (from.z, to.z, MAP_CORNER.z)] {
-        let [t0, t1] = [edge, edge + VIEW as f64 / MAP_SCALE].map(|e| (e - start) / (end - start));
-        (enter, leave) = (enter.max(t0.min(t1)), leave.min(t0.max(t1)));
-    }
-    let dots = ((to - from).length() * MAP_SCALE * (leave - enter)).ceil() as usize;
-    for t in (0..dots).map(|i| enter + (leave - enter) * (i as f64 + 0.5) / dots as f64) {
-        plot(map, from + (to - from) * t, color);
+/// A dot of 5 x 5 map pixels, as five lines.
+fn draw_dot(frame: &mut [u32], point: Vec3, color: u32) {
+    for row in -2..=2 {
+        let left = point + vec3(-2.0, 0.0, row as f64) * (1.0 / MAP_SCALE);
+        draw_line(frame, left, left + vec3(5.0 / MAP_SCALE, 0.0, 0.0), color);
     }
 }
 
-/// The right half: spheres, screen, every 10th ray of the middle row with its hit, light, camera.
-pub fn draw_slice(scene: &Scene, camera: &Camera, map: &mut [&mut [u32]]) {
-    const FAR: f64 = 1e6; // where a ray that hits nothing is drawn to: past the map's edge
-    for row in map.iter_mut() {
-        row.fill(0x202020);
+/// The right half: sphere outlines, sampled rays, the screen, the light and the camera.
+fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
+    for row in frame.chunks_mut(WIDTH) {
+        row[VIEW..].fill(0x202020);
     }
     let eye = camera.position;
     for (shape, material) in &scene.objects {
@@ -359,60 +329,43 @@ pub fn draw_slice(scene: &Scene, camera: &Camera, map: &mut [&mut [u32]]) {
             let cut = (radius * radius - (center.y - eye.y).powi(2)).sqrt();
             let around = |i: u32| center + direction(TAU * i as f64 / 64.0, 0.0) * cut;
             for i in 0..64 {
-                draw_line(map, around(i), around(i + 1), to_rgb(material.color));
+                draw_line(frame, around(i), around(i + 1), to_rgb(material.color));
             }
         }
     }
-    let screen @ [p0, p1, p2] = camera.screen();
+    let screen @ [top_left, right, down] = camera.screen();
     for x in (0..VIEW).step_by(10) {
-        let ray = camera.primary_ray(screen, x, VIEW / 2);
+        let ray = camera.primary_ray(screen, pixel_center(x), 0.5);
         let Some((point, normal, material)) = nearest_hit(&scene.objects, &ray) else {
-            draw_line(map, eye, ray.at(FAR), 0x808080);
+            draw_line(frame, eye, eye + ray.direction * 1e6, 0x808080); // a miss, to the edge of the map
             continue;
         };
-        draw_line(map, eye, point, 0xc0c040);
-        draw_line(map, point, scene.light, 0x606060);
+        draw_line(frame, eye, point, 0xc0c040);
+        draw_line(frame, scene.light, point, 0x606060);
         if material.reflectivity > 0.0 {
-            let mirror = Ray::new(point, reflect(ray.direction, normal));
-            let bounce = nearest_hit(&scene.objects, &mirror).map(|hit| hit.0);
-            let bounce = bounce.unwrap_or(mirror.at(FAR));
-            draw_line(map, point, bounce, 0x40c0ff);
+            let mirror = reflect(&ray, point, normal);
+            let bounce = nearest_hit(&scene.objects, &mirror);
+            let end = bounce.map_or(point + mirror.direction * 1e6, |hit| hit.0);
+            draw_line(frame, point, end, 0x40c0ff);
         }
-        draw_dot(map, point, 0xff4040);
+        draw_dot(frame, point, 0xff4040);
     }
-    let to_middle_row = (p2 - p0) * 0.5; // the screen's middle row, drawn over the rays
-    draw_line(map, p0 + to_middle_row, p1 + to_middle_row, 0xffffff);
-    draw_dot(map, scene.light, 0xffff00);
-    draw_dot(map, eye, 0xffffff);
+    let middle_left = eye + top_left + down * 0.5; // the screen's middle row, over the rays
+    draw_line(frame, middle_left, middle_left + right, 0xffffff);
+    draw_dot(frame, scene.light, 0xffff00);
+    draw_dot(frame, eye, 0xffffff);
 }
 
-// The program: the window and its controls, or headless --bench and --screenshot.
-const USAGE: &str = "usage: raytracer [--bench [FRAMES] | --screenshot FILE.ppm]";
-
+// The program: the window, moved and turned by the keys at a speed × the last frame's seconds.
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    match args.iter().map(String::as_str).collect::<Vec<_>>()[..] {
-        [] => run_window(),
-        ["--bench"] => bench(100),
-        ["--bench", frames] => match frames.parse() {
-            Ok(frames) if frames > 0 => bench(frames),
-            _ => exit_with(2, USAGE),
-        },
-        ["--screenshot", path] => screenshot(path),
-        _ => exit_with(2, USAGE),
+    if std::env::args().len() > 1 {
+        eprintln!("usage: raytracer (no arguments: it opens a window; the keys are printed then)");
+        std::process::exit(2);
     }
-}
-
-/// Ends the program with one line on stderr: status 1 for a failure, 2 for a bad command line.
-fn exit_with(status: i32, message: &str) -> ! {
-    eprintln!("raytracer: {message}");
-    std::process::exit(status);
-}
-
-fn run_window() {
     let options = WindowOptions::default();
     let mut window = Window::new("raytracer", WIDTH, VIEW, options).unwrap_or_else(|error| {
-        exit_with(1, &format!("cannot open a window: no display? ({error})"))
+        eprintln!("raytracer: cannot open a window, no display? ({error})");
+        std::process::exit(1)
     });
     println!("W/S forward/back, A/D left/right, R/F up/down, arrow keys turn, Escape quits");
     let (scene, mut camera) = (Scene::default(), Camera::default());
@@ -421,46 +374,18 @@ fn run_window() {
     while window.is_open() && !window.is_key_down(Key::Escape) {
         let dt = last_frame.elapsed().as_secs_f64();
         last_frame = Instant::now();
-        // Each key held moves or turns by speed × the seconds the last frame took.
         let held = |key| if window.is_key_down(key) { dt } else { 0.0 };
         let forward = direction(camera.yaw, camera.pitch) * (held(Key::W) - held(Key::S));
         let right = direction(camera.yaw - FRAC_PI_2, 0.0) * (held(Key::D) - held(Key::A));
         let up = vec3(0.0, held(Key::R) - held(Key::F), 0.0);
         camera.position = camera.position + (forward + right + up) * 2.0;
         camera.yaw += 1.5 * (held(Key::Left) - held(Key::Right));
-        let pitch = camera.pitch + 1.5 * (held(Key::Up) - held(Key::Down));
-        camera.pitch = pitch.clamp(-FRAC_PI_2, FRAC_PI_2);
+        camera.pitch += 1.5 * (held(Key::Up) - held(Key::Down));
+        camera.pitch = camera.pitch.clamp(-FRAC_PI_2, FRAC_PI_2); // never over the top
         render(&scene, &camera, &mut frame);
         window.set_title(&format!("raytracer - {:.0} fps", 1.0 / dt));
-        let shown = window.update_with_buffer(&frame, WIDTH, VIEW);
-        shown.unwrap_or_else(|error| exit_with(1, &error.to_string()));
+        if window.update_with_buffer(&frame, WIDTH, VIEW).is_err() {
+            break; // the window is gone
+        }
     }
-}
-
-fn bench(frames: usize) {
-    let (scene, camera) = (Scene::default(), Camera::default());
-    let mut frame = vec![0; WIDTH * VIEW];
-    let (mut rays, mut milliseconds) = (0, Vec::new());
-    for _ in 0..frames {
-        let start = Instant::now();
-        rays = render(&scene, &camera, &mut frame);
-        milliseconds.push(start.elapsed().as_secs_f64() * 1e3);
-    }
-    milliseconds.sort_by(f64::total_cmp);
-    let (median, min) = (milliseconds[frames / 2], milliseconds[0]);
-    let (fps, mrays) = (1e3 / median, rays as f64 / median / 1e3);
-    let (primary, secondary) = (VIEW * VIEW, rays as usize - VIEW * VIEW);
-    let timing = format!("{frames} frames: median {median:.2} ms, min {min:.2} ms, {fps:.0} fps");
-    let counts = format!("{primary} primary + {secondary} shadow and mirror rays a frame");
-    println!("{timing}\n{mrays:.1} Mrays/s: {counts}"); // one write: `| head -1` gets no broken pipe
-}
-
-fn screenshot(path: &str) {
-    let mut frame = vec![0; WIDTH * VIEW];
-    render(&Scene::default(), &Camera::default(), &mut frame);
-    let mut ppm = format!("P6\n{WIDTH} {VIEW}\n255\n").into_bytes();
-    let red_green_blue = |pixel: &u32| pixel.to_be_bytes().into_iter().skip(1);
-    ppm.extend(frame.iter().flat_map(red_green_blue));
-    let written = std::fs::write(path, ppm);
-    written.unwrap_or_else(|error| exit_with(1, &format!("cannot write {path}: {error}")));
 }

@@ -342,12 +342,82 @@ fn the_slice_shows_the_camera_a_sphere_outline_and_a_sampled_ray() {
 }
 
 #[test]
-fn one_thread_and_many_render_the_same_frame() {
+fn the_frame_on_all_cores_equals_tracing_each_pixel_on_one() {
     let (scene, camera) = (Scene::default(), Camera::default());
-    let (mut one, mut many) = (vec![0; WIDTH * VIEW], vec![0; WIDTH * VIEW]);
-    let one_rays = render_on(&scene, &camera, &mut one, 1);
-    let many_rays = render_on(&scene, &camera, &mut many, 5);
-    assert!(one == many && one_rays == many_rays);
+    let frame = frame_of(&scene, &camera);
+    let screen = camera.screen();
+    let center = |i: usize| (i as f64 + 0.5) / VIEW as f64;
+    for y in 0..VIEW {
+        for x in 0..VIEW {
+            let ray = camera.primary_ray(screen, center(x), center(y));
+            let alone = to_rgb(scene.trace(&ray, &scene.objects, 0));
+            assert_eq!(frame[y * WIDTH + x], alone, "pixel {x}, {y}");
+        }
+    }
+}
+
+/// The right half of a frame: the 2D slice.
+fn map_of(frame: &[u32]) -> Vec<u32> {
+    frame
+        .chunks(WIDTH)
+        .flat_map(|row| row[VIEW..].to_vec())
+        .collect()
+}
+
+#[test]
+fn with_a_level_camera_the_slice_rays_stay_in_the_eyes_plane() {
+    // Rays through the screen's middle row of a level camera are horizontal: they never meet a
+    // floor below (or above) the eye, so a floor changes nothing on the map.
+    for (position, yaw) in [
+        (vec3(0.0, 0.0, 0.0), 0.0),
+        (vec3(0.7, 0.3, -1.0), 0.4),
+        (vec3(-1.0, 2.5, 1.0), -2.0),
+        (vec3(0.0, -3.0, 0.0), 1.0),
+    ] {
+        let camera = Camera {
+            position,
+            yaw,
+            pitch: 0.0,
+        };
+        let light = vec3(0.0, 5.0, 0.0);
+        let empty = frame_of(&scene(vec![], light), &camera);
+        let floor_only = frame_of(&scene(vec![floor()], light), &camera);
+        assert!(
+            map_of(&empty) == map_of(&floor_only),
+            "{position:?}, yaw {yaw}"
+        );
+    }
+}
+
+#[test]
+fn a_sphere_cut_by_the_eyes_plane_shows_the_hits_on_its_outline() {
+    // Centre half a unit below the eye: the plane y = 0 cuts it in a circle of radius sqrt(0.75).
+    let center = vec3(0.0, -0.5, -4.0);
+    let scene = scene(
+        vec![floor(), sphere(center, 1.0, matte(RED))],
+        vec3(0.0, 5.0, 2.0),
+    );
+    let frame = frame_of(&scene, &Camera::default());
+    let cut = 0.75f64.sqrt();
+    let mut marked = 0;
+    for x in (0..VIEW).step_by(10) {
+        // The sampled ray of column x, in the plane y = 0, meets the circle where |O + tD - C| = cut.
+        let d = vec3((x as f64 + 0.5) / 256.0 - 1.0, 0.0, -1.0).normalize();
+        let to_center = vec3(center.x, 0.0, center.z);
+        let t_center = to_center.dot(d);
+        let p2 = to_center.dot(to_center) - t_center * t_center;
+        if p2 >= cut * cut - 1e-3 {
+            continue; // misses, or only grazes, the circle
+        }
+        let hit = d * (t_center - (cut * cut - p2).sqrt());
+        let around = [-0.025, 0.0, 0.025];
+        let dot = around.iter().any(|&dx| {
+            (around.iter()).any(|&dz| map_pixel(&frame, hit.x + dx, hit.z + dz) == 0xff4040)
+        });
+        assert!(dot, "no hit marked at {hit:?} for column {x}");
+        marked += 1;
+    }
+    assert!(marked >= 5, "{marked} sampled rays hit the sphere");
 }
 
 #[test]

@@ -1,0 +1,26 @@
+//! `cargo bench`: 100 frames of the default view on all cores (`taskset -c 0 cargo bench` for one).
+#[allow(dead_code)]
+#[path = "../../src/main.rs"]
+mod raytracer;
+
+use raytracer::*;
+use std::time::Instant;
+
+fn main() {
+    // Cargo passes `--bench`; there is nothing to choose.
+    let (scene, camera) = (Scene::default(), Camera::default());
+    let mut frame = vec![0; WIDTH * VIEW];
+    let mut milliseconds: Vec<f64> = (0..100)
+        .map(|_| {
+            let start = Instant::now();
+            render(&scene, &camera, &mut frame);
+            start.elapsed().as_secs_f64() * 1e3
+        })
+        .collect();
+    milliseconds.sort_by(f64::total_cmp);
+    let (median, min) = (milliseconds[50], milliseconds[0]);
+    let fps = 1e3 / median;
+    println!(
+        "100 frames of the default view: median {median:.2} ms, min {min:.2} ms, {fps:.0} fps"
+    );
+}

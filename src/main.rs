@@ -299,7 +299,7 @@ fn plot(frame: &mut [u32], point: Vec3, color: u32) {
 /// A dot every map pixel from `from` towards `to`, at most the map's diagonal: then it has left.
 fn draw_line(frame: &mut [u32], from: Vec3, to: Vec3, color: u32) {
     let length = (to - from).length();
-    for i in 0..(length.min(18.2) * MAP_SCALE) as usize {
+    for i in 0..=(length.min(18.2) * MAP_SCALE) as usize {
         plot(
             frame,
             from + (to - from) * (i as f64 / MAP_SCALE / length),

@@ -296,7 +296,7 @@ fn plot(frame: &mut [u32], point: Vec3, color: u32) {
     }
 }
 
-/// A dot every map pixel from `from` towards `to`, at most the map's diagonal: then it has left.
+/// One dot a map pixel from `from` to `to`, for at most the map's diagonal (then it is off the map).
 fn draw_line(frame: &mut [u32], from: Vec3, to: Vec3, color: u32) {
     let length = (to - from).length();
     for i in 0..=(length.min(18.2) * MAP_SCALE) as usize {
@@ -312,7 +312,7 @@ fn draw_line(frame: &mut [u32], from: Vec3, to: Vec3, color: u32) {
 fn draw_dot(frame: &mut [u32], point: Vec3, color: u32) {
     for row in -2..=2 {
         let left = point + vec3(-2.0, 0.0, row as f64) * (1.0 / MAP_SCALE);
-        draw_line(frame, left, left + vec3(5.0 / MAP_SCALE, 0.0, 0.0), color);
+        draw_line(frame, left, left + vec3(4.0 / MAP_SCALE, 0.0, 0.0), color);
     }
 }
 

@@ -163,7 +163,7 @@ fn leaving_out_the_objects_a_row_cannot_reach_changes_no_pixel() {
         let (scene, camera) = random_case(seed, 2);
         assert_culling_changes_no_pixel(&scene, &camera, &format!("seed {seed}: {scene:?}"));
     }
-    // Walls at x = 2 and x = -2: only the right or only the left end of each row heads to one.
+    // The demo with a wall at x = 2 or x = -2: planes beside the balls, seen by every row.
     for normal in [vec3(-1.0, 0.0, 0.0), vec3(1.0, 0.0, 0.0)] {
         let mut scene = Scene::default();
         scene.objects.push((

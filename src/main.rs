@@ -2,16 +2,18 @@
 //! shadows and mirror reflections, and beside the 3D view a top-down 2D slice of the scene.
 use minifb::{Key, Window, WindowOptions};
 use std::f64::consts::{FRAC_PI_2, TAU};
-use std::{ops, sync::Mutex, time::Instant};
+use std::{io::Write, ops, sync::Mutex, time::Instant};
 
 pub const VIEW: usize = 512; // each half of the window is VIEW x VIEW pixels
 pub const WIDTH: usize = 2 * VIEW; // a row of the frame: the 3D view, then the 2D slice
-const EPSILON: f64 = 1e-6; // a hit closer than this is the surface the ray starts on
 pub const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
 pub const AMBIENT: f64 = 0.1; // the light a surface gets even in shadow
+const ODD_SQUARE: f64 = 0.25; // the share of the light the checkerboard's odd squares reflect
+const SCREEN_DISTANCE: f64 = 1.0; // the slide's d: a screen 2 wide at distance 1 sees 90 degrees
+const SELF_HIT: f64 = 1e-6; // a new ray skips this much, times 1 + its origin's distance from 0
 
 // Vector math: points, directions and colours (x, y, z = red, green, blue) are all a Vec3.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Vec3 {
     pub x: f64,
     pub y: f64,
@@ -25,13 +27,6 @@ pub const fn vec3(x: f64, y: f64, z: f64) -> Vec3 {
 impl Vec3 {
     pub fn dot(self, other: Vec3) -> f64 {
         self.x * other.x + self.y * other.y + self.z * other.z
-    }
-    fn cross(self, other: Vec3) -> Vec3 {
-        vec3(
-            self.y * other.z - self.z * other.y,
-            self.z * other.x - self.x * other.z,
-            self.x * other.y - self.y * other.x,
-        )
     }
     pub fn length(self) -> f64 {
         self.dot(self).sqrt()
@@ -51,7 +46,7 @@ impl ops::Add for Vec3 {
 impl ops::Sub for Vec3 {
     type Output = Vec3;
     fn sub(self, other: Vec3) -> Vec3 {
-        self + other * -1.0
+        vec3(self.x - other.x, self.y - other.y, self.z - other.z)
     }
 }
 
@@ -62,44 +57,61 @@ impl ops::Mul<f64> for Vec3 {
     }
 }
 
-// The ray: p(t) = O + tD with t > 0 and D normalized.
+// The ray: p(t) = O + tD with D normalized and 0 < t < ray.t, the distance it reaches so far.
+#[derive(Clone, Copy, Debug)]
 pub struct Ray {
     pub origin: Vec3,
     pub direction: Vec3,
+    pub t: f64,
 }
 
 impl Ray {
-    pub fn new(origin: Vec3, towards: Vec3) -> Ray {
+    /// The ray from `origin` towards `towards` (of any length), `t` long.
+    pub fn new(origin: Vec3, towards: Vec3, t: f64) -> Ray {
         let direction = towards.normalize();
-        Ray { origin, direction }
+        // It starts a hair past its origin, further than the origin's rounding error (which
+        // grows with its distance from 0): a ray leaving a surface does not hit it again there.
+        let origin = origin + direction * (SELF_HIT * (1.0 + origin.length()));
+        Ray {
+            origin,
+            direction,
+            t,
+        }
+    }
+    pub fn at(&self, t: f64) -> Vec3 {
+        self.origin + self.direction * t
     }
 }
 
-// The camera: eye E, view V, screen centre C = E + V (d = 1: 90 degrees), corners p0 top left, p1
-// top right, p2 bottom left; p(u, v) = p0 + u(p1 - p0) + v(p2 - p0) and the ray D = p(u, v) - E.
-#[derive(Debug, Default)]
+// The camera: eye E looking along V at a screen centred on C = E + dV. Its corners are p0 bottom
+// left, p1 bottom right and p2 top left; a ray goes through p(u, v) = p0 + u(p1 - p0) + v(p2 - p0).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Camera {
     pub position: Vec3,
     pub yaw: f64,   // radians about +y; positive turns the view left
     pub pitch: f64, // radians; positive looks up
 }
 
-/// The unit vector for a yaw and a pitch; (0, 0) looks down -z.
-fn direction(yaw: f64, pitch: f64) -> Vec3 {
-    let level = pitch.cos(); // the length of its horizontal part
-    vec3(-yaw.sin() * level, pitch.sin(), -yaw.cos() * level)
-}
-
 impl Camera {
-    /// The screen seen from the eye: p0 - E, p1 - p0 and p2 - p0.
-    pub fn screen(&self) -> [Vec3; 3] {
-        let right = direction(self.yaw - FRAC_PI_2, 0.0) * 2.0;
-        let down = direction(self.yaw, self.pitch - FRAC_PI_2) * 2.0;
-        let top_left = direction(self.yaw, self.pitch) - (right + down) * 0.5;
-        [top_left, right, down]
+    /// The camera's rotation: its view direction V and the screen's right and up, unit vectors.
+    pub fn axes(&self) -> [Vec3; 3] {
+        let (sin_yaw, cos_yaw) = self.yaw.sin_cos();
+        let (sin_pitch, cos_pitch) = self.pitch.sin_cos();
+        let view = vec3(-sin_yaw * cos_pitch, sin_pitch, -cos_yaw * cos_pitch);
+        let right = vec3(cos_yaw, 0.0, -sin_yaw);
+        let up = vec3(sin_yaw * sin_pitch, cos_pitch, cos_yaw * sin_pitch);
+        [view, right, up]
     }
-    pub fn primary_ray(&self, [top_left, right, down]: [Vec3; 3], u: f64, v: f64) -> Ray {
-        Ray::new(self.position, top_left + right * u + down * v)
+    /// The ray setup, once a frame: p0 = C - right - up, p1 = C + right - up, p2 = C - right + up,
+    /// and the primary ray through p(u, v) for u and v from 0 to 1.
+    pub fn primary_rays(&self) -> impl Fn(f64, f64) -> Ray {
+        let [view, right, up] = self.axes();
+        let eye = self.position;
+        let center = eye + view * SCREEN_DISTANCE;
+        let p0 = center - right - up;
+        let p1 = center + right - up;
+        let p2 = center - right + up;
+        move |u, v| Ray::new(eye, p0 + (p1 - p0) * u + (p2 - p0) * v - eye, f64::INFINITY)
     }
 }
 
@@ -108,7 +120,7 @@ fn pixel_center(i: usize) -> f64 {
     (i as f64 + 0.5) / VIEW as f64
 }
 
-// Primitives: the sphere |p - C|² = r² and the plane p.N + d = 0, each with a material.
+// Primitives: the sphere (p - C).(p - C) = r² and the plane p.N + d = 0, each with a material.
 #[derive(Clone, Copy, Debug)]
 pub enum Shape {
     Sphere { center: Vec3, radius: f64 },
@@ -123,36 +135,46 @@ pub struct Material {
 }
 
 impl Shape {
-    /// The distance t of the nearest hit in front of the ray and nearer than `max`, if any.
-    pub fn intersect(&self, ray: &Ray, max: f64) -> Option<f64> {
-        let ahead = |t: f64| (t > EPSILON && t < max).then_some(t);
+    /// The distance t of the ray's first hit with 0 < t < ray.t, if any.
+    pub fn intersect(&self, ray: &Ray) -> Option<f64> {
+        let ahead = |t: f64| (t > 0.0 && t < ray.t).then_some(t);
         match *self {
             // t = -(O.N + d) / (D.N): infinite or NaN for a ray parallel to the plane, so no hit.
             Shape::Plane { normal, offset } => {
                 ahead(-(ray.origin.dot(normal) + offset) / ray.direction.dot(normal))
             }
-            // Project C on the ray, t_c = (C - O).D, where it passes C at p² = |C - O|² - t_c²;
-            // the hits are half a chord, sqrt(r² - p²), either side: the far one from inside.
+            // The slide's test: c = C - O, t = c.D, q = c - tD, p² = q.q; the hits are at
+            // t -/+ sqrt(r² - p²), the far one seen from inside. A ray that only touches it misses.
             Shape::Sphere { center, radius } => {
-                let to_center = center - ray.origin;
-                let t_center = to_center.dot(ray.direction);
-                let p2 = to_center.dot(to_center) - t_center * t_center;
+                let c = center - ray.origin;
+                let t = c.dot(ray.direction);
+                let q = c - ray.direction * t;
+                let p2 = q.dot(q);
                 if p2 >= radius * radius {
                     return None;
                 }
                 let half_chord = (radius * radius - p2).sqrt();
-                ahead(t_center - half_chord).or(ahead(t_center + half_chord))
+                ahead(t - half_chord).or(ahead(t + half_chord))
             }
         }
+    }
+
+    /// The circle where a sphere meets the plane through `point` with unit normal N: around
+    /// C - hN, of radius sqrt(r² - h²), with h = (C - point).N; none if |h| >= r, or for a plane.
+    pub fn cut(&self, point: Vec3, normal: Vec3) -> Option<(Vec3, f64)> {
+        let Shape::Sphere { center, radius } = *self else {
+            return None;
+        };
+        let height = (center - point).dot(normal);
+        let circle = (radius * radius - height * height).sqrt();
+        (height.abs() < radius).then_some((center - normal * height, circle))
     }
 }
 
 // The scene: the objects, one point light and a flat sky.
-type Object = (Shape, Material);
-
 #[derive(Debug)]
 pub struct Scene {
-    pub objects: Vec<Object>,
+    pub objects: Vec<(Shape, Material)>,
     pub light: Vec3,
     pub sky: Vec3,
 }
@@ -166,12 +188,18 @@ impl Default for Scene {
             checkered,
         };
         let ball = |center, radius, color, reflectivity| {
-            let sphere = Shape::Sphere { center, radius };
-            (sphere, material(color, reflectivity, false))
+            (
+                Shape::Sphere { center, radius },
+                material(color, reflectivity, false),
+            )
         };
-        let (normal, offset, white) = (vec3(0.0, 1.0, 0.0), 1.0, vec3(0.9, 0.9, 0.9));
+        let white = vec3(0.9, 0.9, 0.9);
+        let floor = Shape::Plane {
+            normal: vec3(0.0, 1.0, 0.0),
+            offset: 1.0,
+        };
         let objects = vec![
-            (Shape::Plane { normal, offset }, material(white, 0.0, true)),
+            (floor, material(white, 0.0, true)),
             ball(vec3(0.3, 0.0, -4.5), 1.0, white, 0.85),
             ball(vec3(-2.0, -0.2, -4.2), 0.8, vec3(0.9, 0.2, 0.2), 0.0),
             ball(vec3(1.9, -0.4, -3.4), 0.6, vec3(0.2, 0.8, 0.3), 0.0),
@@ -185,74 +213,103 @@ impl Default for Scene {
     }
 }
 
-// Shading: colour = surface × (ambient + N.L where the shadow ray reaches the light), mixed by
-// the reflectivity with the colour the mirror ray R = D - 2(D.N)N brings back.
-/// The nearest hit: its point, the unit normal facing the ray, its material.
-fn nearest_hit(objects: &[Object], ray: &Ray) -> Option<(Vec3, Vec3, Material)> {
-    let (mut t, mut nearest) = (f64::INFINITY, None);
-    for object in objects {
-        if let Some(hit) = object.0.intersect(ray, t) {
-            (t, nearest) = (hit, Some(object));
-        }
-    }
-    let (shape, material) = nearest?;
-    let point = ray.origin + ray.direction * t;
-    let normal = match *shape {
-        Shape::Sphere { center, radius } => (point - center) * (1.0 / radius),
-        Shape::Plane { normal, .. } => normal,
-    };
-    let facing = normal * -normal.dot(ray.direction).signum(); // the side the ray comes from
-    Some((point, facing, *material))
-}
+// Shading: colour = surface × (ambient + (1 - ambient) N.L where the shadow ray reaches the light),
+// mixed by the reflectivity with the colour the mirror ray R = D - 2(D.N)N brings back.
+/// Where a ray hits: the point, the unit normal on the ray's side, the material.
+pub type Hit = (Vec3, Vec3, Material);
 
 impl Scene {
-    /// The colour a ray brings back, its first hit among `objects`, after `depth` mirror bounces.
-    pub fn trace(&self, ray: &Ray, objects: &[Object], depth: u32) -> Vec3 {
-        let Some((point, normal, material)) = nearest_hit(objects, ray) else {
+    /// Step 6, the nearest intersection: each object that the ray hits before ray.t shortens it.
+    pub fn nearest_hit(&self, ray: &mut Ray) -> Option<Hit> {
+        let mut nearest = None;
+        for (shape, material) in &self.objects {
+            if let Some(t) = shape.intersect(ray) {
+                ray.t = t;
+                nearest = Some((shape, material));
+            }
+        }
+        let (shape, material) = nearest?;
+        let point = ray.at(ray.t);
+        let outward = match *shape {
+            Shape::Sphere { center, radius } => (point - center) * (1.0 / radius),
+            Shape::Plane { normal, .. } => normal,
+        };
+        // Surfaces are two-sided: the normal is flipped if it faces away from the ray (D.N > 0).
+        let normal = outward * -outward.dot(ray.direction).signum();
+        Some((point, normal, *material))
+    }
+
+    /// The shadow ray from a point to the light; none where the surface faces away (N.L <= 0).
+    pub fn shadow_ray(&self, point: Vec3, normal: Vec3) -> Option<Ray> {
+        let to_light = self.light - point;
+        let ray = Ray::new(point, to_light, to_light.length());
+        (ray.direction.dot(normal) > 0.0).then_some(ray)
+    }
+
+    /// The colour a ray brings back, `depth` mirror bounces deep.
+    pub fn trace(&self, ray: &mut Ray, depth: u32) -> Vec3 {
+        let hit = self.nearest_hit(ray);
+        self.shade(ray, hit, depth)
+    }
+
+    /// The colour of a ray's hit; the sky if it has none.
+    pub fn shade(&self, ray: &Ray, hit: Option<Hit>, depth: u32) -> Vec3 {
+        let Some((point, normal, material)) = hit else {
             return self.sky;
         };
-        // The shadow ray: lit when no object lies nearer than the light.
-        let to_light = self.light - point;
-        let distance = to_light.length();
-        let shadow_ray = Ray::new(point, to_light);
-        let facing_light = normal.dot(shadow_ray.direction);
+        // Lit where the shadow ray hits nothing before the light.
         let mut brightness = AMBIENT;
-        let blocked = |(shape, _): &Object| shape.intersect(&shadow_ray, distance).is_some();
-        if facing_light > 0.0 && !self.objects.iter().any(blocked) {
-            brightness += (1.0 - AMBIENT) * facing_light;
+        if let Some(mut shadow) = self.shadow_ray(point, normal)
+            && self.nearest_hit(&mut shadow).is_none()
+        {
+            brightness += (1.0 - AMBIENT) * shadow.direction.dot(normal);
         }
-        let odd = material.checkered && (point.x.floor() + point.z.floor()) as i64 & 1 == 1;
-        let color = material.color * (brightness * if odd { 0.25 } else { 1.0 });
+        if material.checkered && (point.x.floor() as i64 + point.z.floor() as i64) % 2 != 0 {
+            brightness *= ODD_SQUARE;
+        }
+        let color = material.color * brightness;
         if material.reflectivity <= 0.0 || depth >= MAX_DEPTH {
             return color;
         }
-        let mirrored = self.trace(&reflect(ray, point, normal), &self.objects, depth + 1);
+        let mirrored = self.trace(&mut mirror_ray(ray, point, normal), depth + 1);
         color * (1.0 - material.reflectivity) + mirrored * material.reflectivity
     }
 }
 
 /// The mirror ray from a hit: R = D - 2(D.N)N.
-fn reflect(ray: &Ray, point: Vec3, normal: Vec3) -> Ray {
-    let direction = ray.direction - normal * (2.0 * ray.direction.dot(normal));
-    Ray::new(point, direction)
+pub fn mirror_ray(ray: &Ray, point: Vec3, normal: Vec3) -> Ray {
+    let mirrored = ray.direction - normal * (2.0 * ray.direction.dot(normal));
+    Ray::new(point, mirrored, f64::INFINITY)
 }
 
 // Rendering: the 3D view's rows dealt out to all cores, then the 2D slice beside them.
 /// Fills the whole 1024 x 512 frame of 0RGB pixels.
 pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
-    let screen = camera.screen();
+    let primary_ray = camera.primary_rays();
+    let [view, _, up] = camera.axes();
     let rows = Mutex::new(frame.chunks_mut(WIDTH).enumerate());
+    let next_row = || rows.lock().unwrap().next(); // the lock is held only to take a row
     let threads = std::thread::available_parallelism().map_or(1, usize::from);
     std::thread::scope(|scope| {
         for _ in 0..threads {
             scope.spawn(|| {
-                for (y, row) in std::iter::from_fn(|| rows.lock().unwrap().next()) {
-                    let ray = |u| camera.primary_ray(screen, u, pixel_center(y));
-                    let reachable = row_objects(scene, ray(0.0), ray(1.0));
-                    // The row's rays first: their square roots overlap instead of each stalling.
-                    let rays: Vec<Ray> = (0..VIEW).map(|x| ray(pixel_center(x))).collect();
-                    for (pixel, ray) in row.iter_mut().zip(&rays) {
-                        *pixel = to_rgb(scene.trace(ray, &reachable, 0));
+                while let Some((y, row)) = next_row() {
+                    let v = 1.0 - pixel_center(y); // rows count down from the top, v up from p0
+                    // For speed only, the same picture: the row's rays fan out in one plane from
+                    // the eye, so they need to be tested only against the spheres that it cuts.
+                    let fan = (up * SCREEN_DISTANCE - view * (2.0 * v - 1.0)).normalize();
+                    let keep = |(shape, _): &&(Shape, Material)| match shape {
+                        Shape::Sphere { .. } => shape.cut(camera.position, fan).is_some(),
+                        Shape::Plane { .. } => true,
+                    };
+                    let objects = scene.objects.iter().filter(keep).copied().collect();
+                    let row_scene = Scene { objects, ..*scene };
+                    // For speed: all the row's rays first, so that their square roots overlap.
+                    let mut rays: Vec<Ray> =
+                        (0..VIEW).map(|x| primary_ray(pixel_center(x), v)).collect();
+                    for (pixel, ray) in row.iter_mut().zip(&mut rays) {
+                        let hit = row_scene.nearest_hit(ray);
+                        *pixel = to_rgb(scene.shade(ray, hit, 0));
                     }
                 }
             });
@@ -261,29 +318,24 @@ pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     draw_slice(scene, camera, frame);
 }
 
-/// The objects a row's rays can hit. They fan out in a plane from the first ray to the last, so
-/// they miss every sphere further than r from it (planes are kept: few rays test them).
-fn row_objects(scene: &Scene, first: Ray, last: Ray) -> Vec<Object> {
-    let fan_normal = first.direction.cross(last.direction).normalize();
-    let reachable = |(shape, _): &&Object| match *shape {
-        Shape::Sphere { center, radius } => {
-            (center - first.origin).dot(fan_normal).abs() < radius + EPSILON // slack for rounding
-        }
-        Shape::Plane { .. } => true,
-    };
-    scene.objects.iter().filter(reachable).copied().collect()
-}
-
-/// A colour as a 0RGB pixel, each channel clamped to [0, 1].
+/// A colour as a 0RGB pixel, each channel clamped to at most 1 (shading never makes it negative).
 pub fn to_rgb(color: Vec3) -> u32 {
-    let byte = |channel: f64| (channel.min(1.0) * 255.0) as u32; // `as` takes negatives to 0
+    let byte = |channel: f64| (channel.min(1.0) * 255.0) as u32;
     byte(color.x) << 16 | byte(color.y) << 8 | byte(color.z)
 }
 
-// The 2D slice: the plane through the eye and the screen's middle row, seen from above, x to the
-// right and -z up; every 10th ray of that row to its hit, its shadow ray and its reflection.
+// The 2D slice: the plane through the eye and the screen's middle row (v = 0.5), seen from above
+// with x to the right and -z up; every 10th ray of that row, its shadow ray and its mirror ray.
 pub const MAP_CORNER: Vec3 = vec3(-6.4, 0.0, -9.4); // the world x and z at the map's top left
 pub const MAP_SCALE: f64 = 40.0; // map pixels per world unit
+const MAP_SIZE: f64 = VIEW as f64 / MAP_SCALE; // world units across the map
+const OUTLINE_SEGMENTS: u32 = 64; // straight pieces in the outline of a cut sphere
+pub const CAMERA: u32 = 0xffffff; // white: the eye and the screen's middle row
+pub const CAMERA_RAY: u32 = 0xffd040; // yellow: a sampled ray up to its hit, and the hit
+pub const SKY_RAY: u32 = 0x6090c0; // steel blue: a ray that hits nothing, to the map's edge
+pub const LIGHT: u32 = 0xff8020; // orange: the light, and a shadow ray that reaches it
+pub const SHADOW_BLOCKED: u32 = 0x9050ff; // violet: a shadow ray, up to what blocks it
+pub const MIRROR_RAY: u32 = 0x30e0e0; // cyan: a mirror ray, up to what it hits
 
 /// Colours the map pixel under a world point, if it is on the map.
 fn plot(frame: &mut [u32], point: Vec3, color: u32) {
@@ -293,96 +345,148 @@ fn plot(frame: &mut [u32], point: Vec3, color: u32) {
     }
 }
 
-/// One dot a map pixel from `from` to `to`, for at most the map's diagonal (then it is off the map).
+/// Draws p(t) for 0 <= t <= ray.t, seen from above, where it crosses the map: a dot a map pixel.
+fn draw_ray(frame: &mut [u32], ray: &Ray, color: u32) {
+    // Clipping: the t where the ray enters and leaves the map's x range, and its z range.
+    let (mut enter, mut leave) = (0.0f64, ray.t);
+    let axes = [
+        (ray.origin.x, ray.direction.x, MAP_CORNER.x),
+        (ray.origin.z, ray.direction.z, MAP_CORNER.z),
+    ];
+    for (origin, direction, low) in axes {
+        let to_low = (low - origin) / direction;
+        let to_high = (low + MAP_SIZE - origin) / direction;
+        enter = enter.max(to_low.min(to_high));
+        leave = leave.min(to_low.max(to_high));
+    }
+    let speed = MAP_SCALE * ray.direction.x.hypot(ray.direction.z); // map pixels per unit of t
+    if enter > leave || speed == 0.0 {
+        return; // it misses the map, or runs straight up or down (the dot at its start shows it)
+    }
+    for i in 0..=((leave - enter) * speed) as usize {
+        plot(frame, ray.at(enter + i as f64 / speed), color);
+    }
+}
+
+/// Draws the segment from `from` to `to`.
 fn draw_line(frame: &mut [u32], from: Vec3, to: Vec3, color: u32) {
     let length = (to - from).length();
-    for i in 0..=(length.min(18.2) * MAP_SCALE) as usize {
-        plot(
-            frame,
-            from + (to - from) * (i as f64 / MAP_SCALE / length),
-            color,
-        );
-    }
+    draw_ray(frame, &Ray::new(from, to - from, length), color);
 }
 
-/// A dot of 5 x 5 map pixels, as five lines.
+/// A dot of 5 x 5 map pixels.
 fn draw_dot(frame: &mut [u32], point: Vec3, color: u32) {
-    for row in -2..=2 {
-        let left = point + vec3(-2.0, 0.0, row as f64) * (1.0 / MAP_SCALE);
-        draw_line(frame, left, left + vec3(4.0 / MAP_SCALE, 0.0, 0.0), color);
+    for dx in -2..=2 {
+        for dz in -2..=2 {
+            let offset = vec3(dx as f64, 0.0, dz as f64) * (1.0 / MAP_SCALE);
+            plot(frame, point + offset, color);
+        }
     }
 }
 
-/// The right half: sphere outlines, sampled rays, the screen, the light and the camera.
+/// Follows a ray to its nearest hit and draws it that far: in the first colour if it hits
+/// something before ray.t, in the second if not.
+fn follow(frame: &mut [u32], scene: &Scene, mut ray: Ray, colors: [u32; 2]) -> Option<Hit> {
+    let hit = scene.nearest_hit(&mut ray);
+    let [hit_color, miss_color] = colors;
+    draw_ray(
+        frame,
+        &ray,
+        if hit.is_some() { hit_color } else { miss_color },
+    );
+    hit
+}
+
+/// The right half: on black, the outlines where the slice plane cuts the spheres, the sampled rays,
+/// the screen, the light and the camera.
 fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     for row in frame.chunks_mut(WIDTH) {
-        row[VIEW..].fill(0x202020);
+        row[VIEW..].fill(0);
     }
+    let [view, right, up] = camera.axes(); // the slice plane holds V and right; up is its normal
     let eye = camera.position;
     for (shape, material) in &scene.objects {
-        if let Shape::Sphere { center, radius } = *shape {
-            // It cuts the plane y = eye.y in a circle of radius² = r² - (C.y - eye.y)², drawn as
-            // 64 segments (none for a NaN radius: the sphere misses the plane).
-            let cut = (radius * radius - (center.y - eye.y).powi(2)).sqrt();
-            let around = |i: u32| center + direction(TAU * i as f64 / 64.0, 0.0) * cut;
-            for i in 0..64 {
+        if let Some((center, radius)) = shape.cut(eye, up) {
+            let around = |i: u32| {
+                let angle = TAU * i as f64 / OUTLINE_SEGMENTS as f64;
+                center + (right * angle.cos() + view * angle.sin()) * radius
+            };
+            for i in 0..OUTLINE_SEGMENTS {
                 draw_line(frame, around(i), around(i + 1), to_rgb(material.color));
             }
         }
     }
-    let screen @ [top_left, right, down] = camera.screen();
+    let primary_ray = camera.primary_rays();
     for x in (0..VIEW).step_by(10) {
-        let ray = camera.primary_ray(screen, pixel_center(x), 0.5);
-        let Some((point, normal, material)) = nearest_hit(&scene.objects, &ray) else {
-            draw_line(frame, eye, eye + ray.direction * 1e6, 0x808080); // a miss, to the edge of the map
+        let ray = primary_ray(pixel_center(x), 0.5);
+        let Some((point, normal, material)) = follow(frame, scene, ray, [CAMERA_RAY, SKY_RAY])
+        else {
             continue;
         };
-        draw_line(frame, eye, point, 0xc0c040);
-        draw_line(frame, scene.light, point, 0x606060);
-        if material.reflectivity > 0.0 {
-            let mirror = reflect(&ray, point, normal);
-            let bounce = nearest_hit(&scene.objects, &mirror);
-            let end = bounce.map_or(point + mirror.direction * 1e6, |hit| hit.0);
-            draw_line(frame, point, end, 0x40c0ff);
+        if let Some(shadow) = scene.shadow_ray(point, normal) {
+            follow(frame, scene, shadow, [SHADOW_BLOCKED, LIGHT]);
         }
-        draw_dot(frame, point, 0xff4040);
+        if material.reflectivity > 0.0 {
+            let mirror = mirror_ray(&ray, point, normal);
+            follow(frame, scene, mirror, [MIRROR_RAY, SKY_RAY]);
+        }
+        draw_dot(frame, point, CAMERA_RAY);
     }
-    let middle_left = eye + top_left + down * 0.5; // the screen's middle row, over the rays
-    draw_line(frame, middle_left, middle_left + right, 0xffffff);
-    draw_dot(frame, scene.light, 0xffff00);
-    draw_dot(frame, eye, 0xffffff);
+    let screen_center = eye + view * SCREEN_DISTANCE; // the screen's middle row, over the rays
+    draw_line(frame, screen_center - right, screen_center + right, CAMERA);
+    draw_dot(frame, scene.light, LIGHT);
+    draw_dot(frame, eye, CAMERA);
 }
 
-// The program: the window, moved and turned by the keys at a speed × the last frame's seconds.
+// The program: a window whose keys move and turn the camera; it renders when the view changes.
+const TITLE: &str = "raytracer - W A S D R F move, arrow keys turn, Escape quits";
+const MOVE_SPEED: f64 = 2.0; // units a second
+const TURN_SPEED: f64 = 1.5; // radians a second
+
 fn main() {
-    if std::env::args().len() > 1 {
-        eprintln!("usage: raytracer (no arguments: it opens a window; the keys are printed then)");
-        std::process::exit(2);
+    let arguments: Vec<String> = std::env::args().skip(1).collect();
+    if !arguments.is_empty() {
+        let usage =
+            "usage: raytracer (no arguments: it opens a window, whose title lists the keys)";
+        if arguments != ["--help"] {
+            eprintln!("{usage}");
+            std::process::exit(2);
+        }
+        writeln!(std::io::stdout(), "{usage}").ok(); // a closed stdout is no error here
+        return;
     }
     let options = WindowOptions::default();
-    let mut window = Window::new("raytracer", WIDTH, VIEW, options).unwrap_or_else(|error| {
-        eprintln!("raytracer: cannot open a window, no display? ({error})");
+    let mut window = Window::new(TITLE, WIDTH, VIEW, options).unwrap_or_else(|error| {
+        eprintln!("raytracer: cannot open the window: {error}");
         std::process::exit(1)
     });
-    println!("W/S forward/back, A/D left/right, R/F up/down, arrow keys turn, Escape quits");
-    let (scene, mut camera) = (Scene::default(), Camera::default());
+    window.set_target_fps(60); // it sleeps for the rest of each 60th of a second
+    let scene = Scene::default();
+    let mut camera = Camera::default();
+    let mut shown = None; // the camera of the frame on screen
     let mut frame = vec![0; WIDTH * VIEW];
-    let mut last_frame = Instant::now();
+    let mut last_step = Instant::now();
     while window.is_open() && !window.is_key_down(Key::Escape) {
-        let dt = last_frame.elapsed().as_secs_f64();
-        last_frame = Instant::now();
+        let elapsed = last_step.elapsed().as_secs_f64();
+        last_step = Instant::now();
+        // X11 leaves a key down when the window loses the focus: keys count only while it has it.
+        let dt = if window.is_active() { elapsed } else { 0.0 };
         let held = |key| if window.is_key_down(key) { dt } else { 0.0 };
-        let forward = direction(camera.yaw, camera.pitch) * (held(Key::W) - held(Key::S));
-        let right = direction(camera.yaw - FRAC_PI_2, 0.0) * (held(Key::D) - held(Key::A));
-        let up = vec3(0.0, held(Key::R) - held(Key::F), 0.0);
-        camera.position = camera.position + (forward + right + up) * 2.0;
-        camera.yaw += 1.5 * (held(Key::Left) - held(Key::Right));
-        camera.pitch += 1.5 * (held(Key::Up) - held(Key::Down));
-        camera.pitch = camera.pitch.clamp(-FRAC_PI_2, FRAC_PI_2); // never over the top
-        render(&scene, &camera, &mut frame);
-        window.set_title(&format!("raytracer - {:.0} fps", 1.0 / dt));
-        if window.update_with_buffer(&frame, WIDTH, VIEW).is_err() {
-            break; // the window is gone
+        let [view, right, _] = camera.axes();
+        let forward = view * (held(Key::W) - held(Key::S));
+        let sideways = right * (held(Key::D) - held(Key::A));
+        let rise = vec3(0.0, held(Key::R) - held(Key::F), 0.0);
+        camera.position = camera.position + (forward + sideways + rise) * MOVE_SPEED;
+        camera.yaw += TURN_SPEED * (held(Key::Left) - held(Key::Right));
+        let pitch = camera.pitch + TURN_SPEED * (held(Key::Up) - held(Key::Down));
+        camera.pitch = pitch.clamp(-FRAC_PI_2, FRAC_PI_2); // straight up at most, never over
+        if shown != Some(camera) {
+            let start = Instant::now();
+            render(&scene, &camera, &mut frame);
+            let milliseconds = start.elapsed().as_secs_f64() * 1e3;
+            window.set_title(&format!("{TITLE} - {milliseconds:.1} ms a frame"));
+            shown = Some(camera);
         }
+        window.update_with_buffer(&frame, WIDTH, VIEW).ok(); // it fails only for a wrong size
     }
 }

@@ -73,9 +73,9 @@ fn cross(a: Vec3, b: Vec3) -> Vec3 {
     )
 }
 
-/// Where a world point shows in the 3D view: the camera looks along
-/// (-sin yaw cos pitch, sin pitch, -cos yaw cos pitch) at a screen 1 away, 2 wide and 2 high.
-fn project(camera: &Camera, point: Vec3) -> (usize, usize) {
+/// The camera's forward, right and up directions: it looks along
+/// (-sin yaw cos pitch, sin pitch, -cos yaw cos pitch), right is level, up is right x forward.
+fn camera_axes(camera: &Camera) -> (Vec3, Vec3, Vec3) {
     let (yaw, pitch) = (camera.yaw, camera.pitch);
     let forward = vec3(
         -yaw.sin() * pitch.cos(),
@@ -83,7 +83,12 @@ fn project(camera: &Camera, point: Vec3) -> (usize, usize) {
         -yaw.cos() * pitch.cos(),
     );
     let right = vec3(yaw.cos(), 0.0, -yaw.sin());
-    let up = cross(right, forward);
+    (forward, right, cross(right, forward))
+}
+
+/// Where a world point shows in the 3D view: the screen is 1 ahead of the eye, 2 wide and 2 high.
+fn project(camera: &Camera, point: Vec3) -> (usize, usize) {
+    let (forward, right, up) = camera_axes(camera);
     let d = point - camera.position;
     let (sx, sy) = (d.dot(right) / d.dot(forward), d.dot(up) / d.dot(forward));
     assert!(
@@ -320,7 +325,7 @@ fn the_slice_shows_the_camera_a_sphere_outline_and_a_sampled_ray() {
     };
     let scene = scene(vec![sphere(center, 1.0, pure_red)], vec3(0.0, 5.0, 2.0));
     let frame = frame_of(&scene, &Camera::default());
-    assert_eq!(map_pixel(&frame, 0.0, 0.0), 0xffffff, "the camera dot");
+    assert_eq!(map_pixel(&frame, 0.0, 0.0), CAMERA, "the camera dot");
     // The far side of the outline, hidden from the rays by the sphere itself.
     for angle in [1.2f64, 1.6, 2.0] {
         let (x, z) = (center.x + angle.cos(), center.z - angle.sin());
@@ -345,12 +350,12 @@ fn the_slice_shows_the_camera_a_sphere_outline_and_a_sampled_ray() {
 fn the_frame_on_all_cores_equals_tracing_each_pixel_on_one() {
     let (scene, camera) = (Scene::default(), Camera::default());
     let frame = frame_of(&scene, &camera);
-    let screen = camera.screen();
+    let primary_ray = camera.primary_rays();
     let center = |i: usize| (i as f64 + 0.5) / VIEW as f64;
     for y in 0..VIEW {
         for x in 0..VIEW {
-            let ray = camera.primary_ray(screen, center(x), center(y));
-            let alone = to_rgb(scene.trace(&ray, &scene.objects, 0));
+            let mut ray = primary_ray(center(x), 1.0 - center(y));
+            let alone = to_rgb(scene.trace(&mut ray, 0));
             assert_eq!(frame[y * WIDTH + x], alone, "pixel {x}, {y}");
         }
     }
@@ -412,7 +417,7 @@ fn a_sphere_cut_by_the_eyes_plane_shows_the_hits_on_its_outline() {
         let hit = d * (t_center - (cut * cut - p2).sqrt());
         let around = [-0.025, 0.0, 0.025];
         let dot = around.iter().any(|&dx| {
-            (around.iter()).any(|&dz| map_pixel(&frame, hit.x + dx, hit.z + dz) == 0xff4040)
+            (around.iter()).any(|&dz| map_pixel(&frame, hit.x + dx, hit.z + dz) == CAMERA_RAY)
         });
         assert!(dot, "no hit marked at {hit:?} for column {x}");
         marked += 1;
@@ -428,7 +433,6 @@ fn odd_cameras_render_valid_frames() {
         ..Camera::default()
     };
     let frame = frame_of(&scene, &inside);
-    assert!(frame.iter().all(|pixel| pixel >> 24 == 0));
     // From the centre of the mirror ball every ray meets its inside, never the sky.
     let sky = [byte(scene.sky.x), byte(scene.sky.y), byte(scene.sky.z)];
     assert!((0..VIEW).all(|y| (0..VIEW).all(|x| rgb(&frame, (x, y)) != sky)));
@@ -439,7 +443,6 @@ fn odd_cameras_render_valid_frames() {
         yaw: 0.0,
     };
     let frame = frame_of(&scene, &below);
-    assert!(frame.iter().all(|pixel| pixel >> 24 == 0));
     let underside = project(&below, vec3(0.5, -1.0, -1.5));
     assert!(
         rgb(&frame, underside)[1] <= byte(AMBIENT * 0.9) + 1,
@@ -451,7 +454,215 @@ fn odd_cameras_render_valid_frames() {
         ..Camera::default()
     };
     let frame = frame_of(&scene, &down);
-    assert!(frame.iter().all(|pixel| pixel >> 24 == 0));
     // Straight down from y = 0 the middle of the view is the floor at (0, -1, 0): square 0 + 0, even.
     assert!(rgb(&frame, (256, 256))[1] > 128);
+}
+
+/// The map pixels within `pixels` map pixels of a world point's x and z (those on the map).
+fn map_near(frame: &[u32], point: Vec3, pixels: i32) -> Vec<u32> {
+    let mut found = Vec::new();
+    for dx in -pixels..=pixels {
+        for dz in -pixels..=pixels {
+            let x = point.x + dx as f64 / MAP_SCALE;
+            let z = point.z + dz as f64 / MAP_SCALE;
+            let on_map = |w: f64, low: f64| (low..low + VIEW as f64 / MAP_SCALE).contains(&w);
+            if on_map(x, MAP_CORNER.x) && on_map(z, MAP_CORNER.z) {
+                found.push(map_pixel(frame, x, z));
+            }
+        }
+    }
+    found
+}
+
+/// Where a ray O + tD first meets a sphere, by the quadratic |O + tD - C|² = r², if in front.
+fn ray_sphere(origin: Vec3, direction: Vec3, center: Vec3, radius: f64) -> Option<Vec3> {
+    let d = direction.normalize();
+    let oc = origin - center;
+    let (b, c) = (oc.dot(d), oc.dot(oc) - radius * radius);
+    let t = -b - (b * b - c).sqrt(); // NaN when it misses
+    (t > 0.0).then(|| origin + d * t)
+}
+
+/// The sampled rays of the slice: every 10th column of the screen's middle row, by the test's own
+/// camera geometry (the screen 1 ahead, 2 wide).
+fn sampled_directions(camera: &Camera) -> Vec<Vec3> {
+    let (forward, right, _) = camera_axes(camera);
+    (0..VIEW)
+        .step_by(10)
+        .map(|x| forward + right * ((x as f64 + 0.5) / 256.0 - 1.0))
+        .collect()
+}
+
+#[test]
+fn a_pitched_slice_plane_outlines_the_spheres_it_cuts_and_no_others() {
+    let red = Material {
+        color: vec3(1.0, 0.0, 0.0),
+        ..matte(RED)
+    };
+    let green = Material {
+        color: vec3(0.0, 1.0, 0.0),
+        ..matte(RED)
+    };
+    for (yaw, pitch) in [
+        (0.0, 0.25),
+        (0.0, -0.25),
+        (0.6, 0.3),
+        (-0.9, -0.35),
+        (1.3, -0.2),
+    ] {
+        let camera = Camera {
+            position: vec3(0.5, 0.3, 1.0),
+            yaw,
+            pitch,
+        };
+        let (forward, right, up) = camera_axes(&camera);
+        let eye = camera.position;
+        // Cut: its centre 0.4 above the tilted plane, so the plane cuts it in a circle of
+        // radius sqrt(1 - 0.4²) around the centre's foot on the plane.
+        let cut_center = eye + forward * 5.0 + right * 0.5 + up * 0.4;
+        let foot = cut_center - up * 0.4;
+        let circle = (1.0f64 - 0.4 * 0.4).sqrt();
+        // Missed: at the eye's height, which a level plane would cut, but 5 |sin pitch| >= 0.99
+        // from the tilted plane, further than its radius 0.8.
+        let level_forward = vec3(-yaw.sin(), 0.0, -yaw.cos());
+        let missed_center = eye + level_forward * 5.0 - right * 2.5;
+        assert!((missed_center - eye).dot(up).abs() > 0.8);
+        let scene = scene(
+            vec![
+                sphere(cut_center, 1.0, red),
+                sphere(missed_center, 0.8, green),
+            ],
+            eye - forward * 3.0 + up * 4.0,
+        );
+        let frame = frame_of(&scene, &camera);
+        let case = format!("yaw {yaw}, pitch {pitch}");
+        // The far side of the outline, where no sampled ray ends.
+        for angle in [1.2f64, 1.57, 1.9] {
+            let on_outline = foot + (right * angle.cos() + forward * angle.sin()) * circle;
+            let near = map_near(&frame, on_outline, 1);
+            assert!(
+                near.contains(&0xff0000),
+                "{case}: outline at {on_outline:?}"
+            );
+        }
+        let map = map_of(&frame);
+        assert!(
+            !map.contains(&0x00ff00),
+            "{case}: the missed sphere is outlined"
+        );
+        // Each sampled ray that hits the cut sphere hits it on the outline, and its dot is there.
+        let mut hits = 0;
+        for direction in sampled_directions(&camera) {
+            let Some(hit) = ray_sphere(eye, direction, cut_center, 1.0) else {
+                continue;
+            };
+            assert!(
+                ((hit - foot).length() - circle).abs() < 1e-9 && (hit - eye).dot(up).abs() < 1e-9
+            );
+            let near = map_near(&frame, hit, 1);
+            assert!(near.contains(&CAMERA_RAY), "{case}: no hit dot at {hit:?}");
+            hits += 1;
+        }
+        assert!(hits >= 5, "{case}: {hits} sampled rays hit the cut sphere");
+    }
+}
+
+#[test]
+fn from_far_off_the_map_the_sampled_rays_cross_it_up_to_their_hits() {
+    let center = vec3(0.0, 0.0, -5.0);
+    // The light straight above the sphere: no hit on the slice plane faces it, so the map shows
+    // only the sampled rays.
+    let scene = scene(vec![sphere(center, 3.0, matte(RED))], vec3(0.0, 20.0, -5.0));
+    for distance in [20.0, 30.0, 40.0] {
+        let camera = Camera {
+            position: vec3(0.0, 0.0, distance),
+            ..Camera::default()
+        };
+        let frame = frame_of(&scene, &camera);
+        let (mut hits, mut misses) = (0, 0);
+        for direction in sampled_directions(&camera) {
+            let d = direction.normalize();
+            // Where the ray crosses the map's bottom edge, z = 3.4, and the line z = -2.
+            let at_z = |z: f64| camera.position + d * ((z - distance) / d.z);
+            if at_z(3.0).x.abs() > 6.0 {
+                continue; // it passes beside the map
+            }
+            match ray_sphere(camera.position, direction, center, 3.0) {
+                Some(hit) => {
+                    for point in [at_z(3.0), at_z(2.0), at_z(hit.z + 0.3)] {
+                        let near = map_near(&frame, point, 1);
+                        assert!(near.contains(&CAMERA_RAY), "{distance}: ray at {point:?}");
+                    }
+                    hits += 1;
+                }
+                None if at_z(-9.0).x.abs() < 6.0 => {
+                    for point in [at_z(3.0), at_z(-2.0), at_z(-9.0)] {
+                        let near = map_near(&frame, point, 1);
+                        assert!(near.contains(&SKY_RAY), "{distance}: miss at {point:?}");
+                    }
+                    misses += 1;
+                }
+                None => {}
+            }
+        }
+        assert!(
+            hits >= 2 && misses >= 2,
+            "{distance}: {hits} hits, {misses} misses"
+        );
+    }
+}
+
+#[test]
+fn a_blocked_shadow_ray_ends_at_its_blocker_and_a_hit_facing_away_has_none() {
+    let camera = Camera::default();
+    let target = vec3(1.5, 0.0, -6.0);
+    let light = vec3(-3.0, 0.0, -3.0);
+    // A sampled ray that hits the target sphere, and its shadow ray's segment to the light.
+    let directions = sampled_directions(&camera);
+    let hit = directions
+        .iter()
+        .filter_map(|&d| ray_sphere(camera.position, d, target, 1.0))
+        .min_by(|a, b| a.x.total_cmp(&b.x))
+        .expect("a sampled ray hits the target");
+    let to_light = (light - hit).normalize();
+    assert!(
+        (hit - target).dot(to_light) > 0.0,
+        "the hit faces the light"
+    );
+    // The blocker: a small sphere half way along that segment.
+    let blocker = hit + (light - hit) * 0.5;
+    let objects = vec![
+        sphere(target, 1.0, matte(RED)),
+        sphere(blocker, 0.3, matte(RED)),
+    ];
+    let frame = frame_of(&scene(objects, light), &camera);
+    let before = blocker - to_light * 0.45;
+    let after = blocker + to_light * 0.7;
+    assert!(
+        map_near(&frame, before, 1).contains(&SHADOW_BLOCKED),
+        "before the blocker"
+    );
+    assert!(
+        !map_near(&frame, after, 1).contains(&SHADOW_BLOCKED),
+        "past the blocker"
+    );
+    // The target alone, lit from behind: every sampled hit faces away, so no shadow ray at all.
+    let behind = vec3(1.5, 0.0, -12.0);
+    for direction in &directions {
+        if let Some(hit) = ray_sphere(camera.position, *direction, target, 1.0) {
+            assert!((hit - target).dot(behind - hit) < 0.0);
+        }
+    }
+    let frame = frame_of(
+        &scene(vec![sphere(target, 1.0, matte(RED))], behind),
+        &camera,
+    );
+    let map = map_of(&frame);
+    assert!(!map.contains(&SHADOW_BLOCKED));
+    let light_dot = map_near(&frame, behind, 2).len();
+    let lit = map.iter().filter(|&&pixel| pixel == LIGHT).count();
+    assert_eq!(
+        lit, light_dot,
+        "only the light's dot is in the light's colour"
+    );
 }

@@ -7,7 +7,7 @@ use std::{io::Write, ops, sync::Mutex, time::Instant};
 pub const VIEW: usize = 512; // each half of the window is VIEW x VIEW pixels
 pub const WIDTH: usize = 2 * VIEW; // a row of the frame: the 3D view, then the 2D slice
 pub const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
-pub const AMBIENT: f64 = 0.1; // the light a surface gets even in shadow
+pub const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
 const ODD_SQUARE: f64 = 0.25; // the share of the light the checkerboard's odd squares reflect
 const SCREEN_DISTANCE: f64 = 1.0; // the slide's d: a screen 2 wide at distance 1 sees 90 degrees
 const SELF_HIT: f64 = 1e-6; // a new ray skips this much, times 1 + its origin's distance from 0
@@ -66,14 +66,13 @@ pub struct Ray {
 }
 
 impl Ray {
-    /// The ray from `origin` towards `towards` (of any length), `t` long.
+    /// The ray from `origin` towards `towards` (of any length), `t` long. It starts a hair past
+    /// `origin`, beyond its rounding error (which grows with its distance from 0), so that a ray
+    /// leaving a surface does not hit that surface again.
     pub fn new(origin: Vec3, towards: Vec3, t: f64) -> Ray {
         let direction = towards.normalize();
-        // It starts a hair past its origin, further than the origin's rounding error (which
-        // grows with its distance from 0): a ray leaving a surface does not hit it again there.
-        let origin = origin + direction * (SELF_HIT * (1.0 + origin.length()));
         Ray {
-            origin,
+            origin: origin + direction * (SELF_HIT * (1.0 + origin.length())),
             direction,
             t,
         }
@@ -102,8 +101,8 @@ impl Camera {
         let up = vec3(sin_yaw * sin_pitch, cos_pitch, cos_yaw * sin_pitch);
         [view, right, up]
     }
-    /// The ray setup, once a frame: p0 = C - right - up, p1 = C + right - up, p2 = C - right + up,
-    /// and the primary ray through p(u, v) for u and v from 0 to 1.
+    /// The ray setup, once a frame: p0 = C - right - up, p1 = C + right - up, p2 = C - right + up;
+    /// then the primary ray through p(u, v), for u and v from 0 to 1, from O = E along p(u, v) - E.
     pub fn primary_rays(&self) -> impl Fn(f64, f64) -> Ray {
         let [view, right, up] = self.axes();
         let eye = self.position;
@@ -111,7 +110,11 @@ impl Camera {
         let p0 = center - right - up;
         let p1 = center + right - up;
         let p2 = center - right + up;
-        move |u, v| Ray::new(eye, p0 + (p1 - p0) * u + (p2 - p0) * v - eye, f64::INFINITY)
+        move |u, v| Ray {
+            origin: eye,
+            direction: (p0 + (p1 - p0) * u + (p2 - p0) * v - eye).normalize(),
+            t: f64::INFINITY,
+        }
     }
 }
 
@@ -136,6 +139,7 @@ pub struct Material {
 
 impl Shape {
     /// The distance t of the ray's first hit with 0 < t < ray.t, if any.
+    #[inline(always)]
     pub fn intersect(&self, ray: &Ray) -> Option<f64> {
         let ahead = |t: f64| (t > 0.0 && t < ray.t).then_some(t);
         match *self {
@@ -160,7 +164,7 @@ impl Shape {
     }
 
     /// The circle where a sphere meets the plane through `point` with unit normal N: around
-    /// C - hN, of radius sqrt(r² - h²), with h = (C - point).N; none if |h| >= r, or for a plane.
+    /// C - hN, of radius sqrt(r² - h²), where h = (C - point).N; none if |h| >= r, or for a plane.
     pub fn cut(&self, point: Vec3, normal: Vec3) -> Option<(Vec3, f64)> {
         let Shape::Sphere { center, radius } = *self else {
             return None;
@@ -188,10 +192,8 @@ impl Default for Scene {
             checkered,
         };
         let ball = |center, radius, color, reflectivity| {
-            (
-                Shape::Sphere { center, radius },
-                material(color, reflectivity, false),
-            )
+            let sphere = Shape::Sphere { center, radius };
+            (sphere, material(color, reflectivity, false))
         };
         let white = vec3(0.9, 0.9, 0.9);
         let floor = Shape::Plane {
@@ -246,7 +248,7 @@ impl Scene {
         (ray.direction.dot(normal) > 0.0).then_some(ray)
     }
 
-    /// The colour a ray brings back, `depth` mirror bounces deep.
+    /// The colour a ray brings back, `depth` mirror bounces deep; the sky if it hits nothing.
     pub fn trace(&self, ray: &mut Ray, depth: u32) -> Vec3 {
         let hit = self.nearest_hit(ray);
         self.shade(ray, hit, depth)
@@ -257,12 +259,13 @@ impl Scene {
         let Some((point, normal, material)) = hit else {
             return self.sky;
         };
-        // Lit where the shadow ray hits nothing before the light.
+        // Lit where no object lies on the shadow ray before the light (any one is enough).
         let mut brightness = AMBIENT;
-        if let Some(mut shadow) = self.shadow_ray(point, normal)
-            && self.nearest_hit(&mut shadow).is_none()
-        {
-            brightness += (1.0 - AMBIENT) * shadow.direction.dot(normal);
+        if let Some(shadow) = self.shadow_ray(point, normal) {
+            let blocked = |(shape, _): &(Shape, Material)| shape.intersect(&shadow).is_some();
+            if !self.objects.iter().any(blocked) {
+                brightness += (1.0 - AMBIENT) * shadow.direction.dot(normal);
+            }
         }
         if material.checkered && (point.x.floor() as i64 + point.z.floor() as i64) % 2 != 0 {
             brightness *= ODD_SQUARE;
@@ -295,14 +298,14 @@ pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
             scope.spawn(|| {
                 while let Some((y, row)) = next_row() {
                     let v = 1.0 - pixel_center(y); // rows count down from the top, v up from p0
-                    // For speed only, the same picture: the row's rays fan out in one plane from
-                    // the eye, so they need to be tested only against the spheres that it cuts.
-                    let fan = (up * SCREEN_DISTANCE - view * (2.0 * v - 1.0)).normalize();
-                    let keep = |(shape, _): &&(Shape, Material)| match shape {
-                        Shape::Sphere { .. } => shape.cut(camera.position, fan).is_some(),
+                    // For speed, the same image: the row's rays lie in one plane through the eye, so
+                    // their nearest hits are searched only among the planes and the spheres it cuts.
+                    let row_plane = (up * SCREEN_DISTANCE - view * (2.0 * v - 1.0)).normalize();
+                    let reachable = |(shape, _): &&(Shape, Material)| match shape {
+                        Shape::Sphere { .. } => shape.cut(camera.position, row_plane).is_some(),
                         Shape::Plane { .. } => true,
                     };
-                    let objects = scene.objects.iter().filter(keep).copied().collect();
+                    let objects = scene.objects.iter().filter(reachable).copied().collect();
                     let row_scene = Scene { objects, ..*scene };
                     // For speed: all the row's rays first, so that their square roots overlap.
                     let mut rays: Vec<Ray> =
@@ -328,43 +331,43 @@ pub fn to_rgb(color: Vec3) -> u32 {
 // with x to the right and -z up; every 10th ray of that row, its shadow ray and its mirror ray.
 pub const MAP_CORNER: Vec3 = vec3(-6.4, 0.0, -9.4); // the world x and z at the map's top left
 pub const MAP_SCALE: f64 = 40.0; // map pixels per world unit
-const MAP_SIZE: f64 = VIEW as f64 / MAP_SCALE; // world units across the map
 const OUTLINE_SEGMENTS: u32 = 64; // straight pieces in the outline of a cut sphere
+const DOT: i32 = 2; // a dot is 5 x 5 map pixels: 2 either side of its point
 pub const CAMERA: u32 = 0xffffff; // white: the eye and the screen's middle row
-pub const CAMERA_RAY: u32 = 0xffd040; // yellow: a sampled ray up to its hit, and the hit
-pub const SKY_RAY: u32 = 0x6090c0; // steel blue: a ray that hits nothing, to the map's edge
-pub const LIGHT: u32 = 0xff8020; // orange: the light, and a shadow ray that reaches it
-pub const SHADOW_BLOCKED: u32 = 0x9050ff; // violet: a shadow ray, up to what blocks it
-pub const MIRROR_RAY: u32 = 0x30e0e0; // cyan: a mirror ray, up to what it hits
+pub const CAMERA_RAY: u32 = 0xffff00; // yellow: a sampled ray up to its hit, and the hit
+pub const SKY_RAY: u32 = 0x4070b0; // steel blue: a ray that hits nothing, to the map's edge
+pub const LIGHT: u32 = 0xff6000; // orange: the light, and a shadow ray that reaches it
+pub const SHADOW_BLOCKED: u32 = 0xa040ff; // violet: a shadow ray, up to what blocks it
+pub const MIRROR_RAY: u32 = 0x00e0ff; // cyan: a mirror ray, up to what it hits
 
-/// Colours the map pixel under a world point, if it is on the map.
-fn plot(frame: &mut [u32], point: Vec3, color: u32) {
-    let on_map = (point - MAP_CORNER) * MAP_SCALE;
-    if on_map.x.min(on_map.z) >= 0.0 && on_map.x.max(on_map.z) < VIEW as f64 {
-        frame[on_map.z as usize * WIDTH + VIEW + on_map.x as usize] = color;
+/// Colours the map pixels up to `size` pixels either side of a world point, if they are on the map.
+fn plot(frame: &mut [u32], point: Vec3, size: i32, color: u32) {
+    for dx in -size..=size {
+        for dz in -size..=size {
+            let on_map = (point - MAP_CORNER) * MAP_SCALE + vec3(dx as f64, 0.0, dz as f64);
+            if on_map.x.min(on_map.z) >= 0.0 && on_map.x.max(on_map.z) < VIEW as f64 {
+                frame[on_map.z as usize * WIDTH + VIEW + on_map.x as usize] = color;
+            }
+        }
     }
 }
 
-/// Draws p(t) for 0 <= t <= ray.t, seen from above, where it crosses the map: a dot a map pixel.
+/// Draws p(t) for 0 <= t <= ray.t seen from above, as a dot in each map column that it crosses
+/// (or row, if it runs more along z than x): the line algorithm DDA, walking only the map.
 fn draw_ray(frame: &mut [u32], ray: &Ray, color: u32) {
-    // Clipping: the t where the ray enters and leaves the map's x range, and its z range.
-    let (mut enter, mut leave) = (0.0f64, ray.t);
-    let axes = [
-        (ray.origin.x, ray.direction.x, MAP_CORNER.x),
-        (ray.origin.z, ray.direction.z, MAP_CORNER.z),
-    ];
-    for (origin, direction, low) in axes {
-        let to_low = (low - origin) / direction;
-        let to_high = (low + MAP_SIZE - origin) / direction;
-        enter = enter.max(to_low.min(to_high));
-        leave = leave.min(to_low.max(to_high));
+    let along_x = ray.direction.x.abs() >= ray.direction.z.abs();
+    let axis = |v: Vec3| if along_x { v.x } else { v.z };
+    let slope = axis(ray.direction) * MAP_SCALE; // map columns (or rows) per unit of t
+    if slope == 0.0 {
+        return; // straight up or down: the dot at its start shows it
     }
-    let speed = MAP_SCALE * ray.direction.x.hypot(ray.direction.z); // map pixels per unit of t
-    if enter > leave || speed == 0.0 {
-        return; // it misses the map, or runs straight up or down (the dot at its start shows it)
-    }
-    for i in 0..=((leave - enter) * speed) as usize {
-        plot(frame, ray.at(enter + i as f64 / speed), color);
+    let start = (axis(ray.origin) - axis(MAP_CORNER)) * MAP_SCALE; // the column p(0) is in
+    let end = start + slope * ray.t;
+    let first = start.min(end).clamp(0.0, VIEW as f64) as usize;
+    let last = start.max(end).clamp(0.0, VIEW as f64) as usize;
+    for column in first..last {
+        let t = (column as f64 + 0.5 - start) / slope; // p(t) is in the middle of the column
+        plot(frame, ray.at(t), 0, color);
     }
 }
 
@@ -372,16 +375,6 @@ fn draw_ray(frame: &mut [u32], ray: &Ray, color: u32) {
 fn draw_line(frame: &mut [u32], from: Vec3, to: Vec3, color: u32) {
     let length = (to - from).length();
     draw_ray(frame, &Ray::new(from, to - from, length), color);
-}
-
-/// A dot of 5 x 5 map pixels.
-fn draw_dot(frame: &mut [u32], point: Vec3, color: u32) {
-    for dx in -2..=2 {
-        for dz in -2..=2 {
-            let offset = vec3(dx as f64, 0.0, dz as f64) * (1.0 / MAP_SCALE);
-            plot(frame, point + offset, color);
-        }
-    }
 }
 
 /// Follows a ray to its nearest hit and draws it that far: in the first colour if it hits
@@ -406,14 +399,15 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     let [view, right, up] = camera.axes(); // the slice plane holds V and right; up is its normal
     let eye = camera.position;
     for (shape, material) in &scene.objects {
-        if let Some((center, radius)) = shape.cut(eye, up) {
-            let around = |i: u32| {
-                let angle = TAU * i as f64 / OUTLINE_SEGMENTS as f64;
-                center + (right * angle.cos() + view * angle.sin()) * radius
-            };
-            for i in 0..OUTLINE_SEGMENTS {
-                draw_line(frame, around(i), around(i + 1), to_rgb(material.color));
-            }
+        let Some((center, radius)) = shape.cut(eye, up) else {
+            continue;
+        };
+        let around = |i: u32| {
+            let angle = TAU * i as f64 / OUTLINE_SEGMENTS as f64;
+            center + (right * angle.cos() + view * angle.sin()) * radius
+        };
+        for i in 0..OUTLINE_SEGMENTS {
+            draw_line(frame, around(i), around(i + 1), to_rgb(material.color));
         }
     }
     let primary_ray = camera.primary_rays();
@@ -430,30 +424,30 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
             let mirror = mirror_ray(&ray, point, normal);
             follow(frame, scene, mirror, [MIRROR_RAY, SKY_RAY]);
         }
-        draw_dot(frame, point, CAMERA_RAY);
+        plot(frame, point, DOT, CAMERA_RAY);
     }
     let screen_center = eye + view * SCREEN_DISTANCE; // the screen's middle row, over the rays
     draw_line(frame, screen_center - right, screen_center + right, CAMERA);
-    draw_dot(frame, scene.light, LIGHT);
-    draw_dot(frame, eye, CAMERA);
+    plot(frame, scene.light, DOT, LIGHT);
+    plot(frame, eye, DOT, CAMERA);
 }
 
 // The program: a window whose keys move and turn the camera; it renders when the view changes.
+const USAGE: &str =
+    "usage: raytracer (no arguments: it opens a window, whose title lists the keys)";
 const TITLE: &str = "raytracer - W A S D R F move, arrow keys turn, Escape quits";
 const MOVE_SPEED: f64 = 2.0; // units a second
 const TURN_SPEED: f64 = 1.5; // radians a second
 
 fn main() {
     let arguments: Vec<String> = std::env::args().skip(1).collect();
-    if !arguments.is_empty() {
-        let usage =
-            "usage: raytracer (no arguments: it opens a window, whose title lists the keys)";
-        if arguments != ["--help"] {
-            eprintln!("{usage}");
-            std::process::exit(2);
-        }
-        writeln!(std::io::stdout(), "{usage}").ok(); // a closed stdout is no error here
+    if arguments == ["--help"] {
+        writeln!(std::io::stdout(), "{USAGE}").ok(); // a closed stdout is no error here
         return;
+    }
+    if !arguments.is_empty() {
+        eprintln!("{USAGE}");
+        std::process::exit(2);
     }
     let options = WindowOptions::default();
     let mut window = Window::new(TITLE, WIDTH, VIEW, options).unwrap_or_else(|error| {

@@ -325,7 +325,7 @@ fn the_slice_shows_the_camera_a_sphere_outline_and_a_sampled_ray() {
     };
     let scene = scene(vec![sphere(center, 1.0, pure_red)], vec3(0.0, 5.0, 2.0));
     let frame = frame_of(&scene, &Camera::default());
-    assert_eq!(map_pixel(&frame, 0.0, 0.0), CAMERA, "the camera dot");
+    assert_eq!(map_pixel(&frame, 0.0, 0.0), CAMERA_COLOR, "the camera dot");
     // The far side of the outline, hidden from the rays by the sphere itself.
     for angle in [1.2f64, 1.6, 2.0] {
         let (x, z) = (center.x + angle.cos(), center.z - angle.sin());
@@ -417,7 +417,7 @@ fn a_sphere_cut_by_the_eyes_plane_shows_the_hits_on_its_outline() {
         let hit = d * (t_center - (cut * cut - p2).sqrt());
         let around = [-0.025, 0.0, 0.025];
         let dot = around.iter().any(|&dx| {
-            (around.iter()).any(|&dz| map_pixel(&frame, hit.x + dx, hit.z + dz) == CAMERA_RAY)
+            (around.iter()).any(|&dz| map_pixel(&frame, hit.x + dx, hit.z + dz) == RAY_COLOR)
         });
         assert!(dot, "no hit marked at {hit:?} for column {x}");
         marked += 1;
@@ -560,7 +560,7 @@ fn a_pitched_slice_plane_outlines_the_spheres_it_cuts_and_no_others() {
                 ((hit - foot).length() - circle).abs() < 1e-9 && (hit - eye).dot(up).abs() < 1e-9
             );
             let near = map_near(&frame, hit, 1);
-            assert!(near.contains(&CAMERA_RAY), "{case}: no hit dot at {hit:?}");
+            assert!(near.contains(&RAY_COLOR), "{case}: no hit dot at {hit:?}");
             hits += 1;
         }
         assert!(hits >= 5, "{case}: {hits} sampled rays hit the cut sphere");
@@ -591,14 +591,14 @@ fn from_far_off_the_map_the_sampled_rays_cross_it_up_to_their_hits() {
                 Some(hit) => {
                     for point in [at_z(3.0), at_z(2.0), at_z(hit.z + 0.3)] {
                         let near = map_near(&frame, point, 1);
-                        assert!(near.contains(&CAMERA_RAY), "{distance}: ray at {point:?}");
+                        assert!(near.contains(&RAY_COLOR), "{distance}: ray at {point:?}");
                     }
                     hits += 1;
                 }
                 None if at_z(-9.0).x.abs() < 6.0 => {
                     for point in [at_z(3.0), at_z(-2.0), at_z(-9.0)] {
                         let near = map_near(&frame, point, 1);
-                        assert!(near.contains(&SKY_RAY), "{distance}: miss at {point:?}");
+                        assert!(near.contains(&MISS_COLOR), "{distance}: miss at {point:?}");
                     }
                     misses += 1;
                 }
@@ -639,11 +639,11 @@ fn a_blocked_shadow_ray_ends_at_its_blocker_and_a_hit_facing_away_has_none() {
     let before = blocker - to_light * 0.45;
     let after = blocker + to_light * 0.7;
     assert!(
-        map_near(&frame, before, 1).contains(&SHADOW_BLOCKED),
+        map_near(&frame, before, 1).contains(&BLOCKED_COLOR),
         "before the blocker"
     );
     assert!(
-        !map_near(&frame, after, 1).contains(&SHADOW_BLOCKED),
+        !map_near(&frame, after, 1).contains(&BLOCKED_COLOR),
         "past the blocker"
     );
     // The target alone, lit from behind: every sampled hit faces away, so no shadow ray at all.
@@ -658,9 +658,9 @@ fn a_blocked_shadow_ray_ends_at_its_blocker_and_a_hit_facing_away_has_none() {
         &camera,
     );
     let map = map_of(&frame);
-    assert!(!map.contains(&SHADOW_BLOCKED));
+    assert!(!map.contains(&BLOCKED_COLOR));
     let light_dot = map_near(&frame, behind, 2).len();
-    let lit = map.iter().filter(|&&pixel| pixel == LIGHT).count();
+    let lit = map.iter().filter(|&&pixel| pixel == LIGHT_COLOR).count();
     assert_eq!(
         lit, light_dot,
         "only the light's dot is in the light's colour"

@@ -447,7 +447,7 @@ fn perpendicular(n: Vec3, random: &mut Random) -> Vec3 {
 #[test]
 fn far_away_a_ray_leaving_a_plane_does_not_hit_it_again() {
     // A plane tilted at random, at height d above the origin, and a ray from the origin that
-    // grazes it 10^4 to 10^7 units away. The mirror ray leaves the plane, which is alone in the
+    // grazes it 10^4 to 10^11 units away. The mirror ray leaves the plane, which is alone in the
     // scene, so it brings back the sky; the shadow ray to a light high above that point reaches it.
     let mut random = Random(11);
     let sky = vec3(1.0, 1.0, 1.0);
@@ -455,7 +455,7 @@ fn far_away_a_ray_leaving_a_plane_does_not_hit_it_again() {
     for case in 0..20_000 {
         let normal = random.point(1.0).normalize();
         let offset = random.between(1.0, 5.0);
-        let far = 10f64.powf(random.between(4.0, 7.0));
+        let far = 10f64.powf(random.between(4.0, 11.0));
         let on_plane = normal * -offset + perpendicular(normal, &mut random) * far;
         let plane = Shape::Plane { normal, offset };
         // A black half-mirror: what it shows is half the colour its mirror ray brings back.

@@ -459,6 +459,7 @@ const USAGE: &str =
 const TITLE: &str = "raytracer - W A S D R F move, arrow keys turn, Escape quits";
 const MOVE_SPEED: f64 = 2.0; // units a second
 const TURN_SPEED: f64 = 1.5; // radians a second
+const REDRAW_STEPS: u32 = 10; // idle, the window is redrawn every 10th step: 6 times a second
 
 fn main() {
     let arguments: Vec<String> = std::env::args().skip(1).collect();
@@ -505,9 +506,9 @@ fn main() {
             window.set_title(&format!("{TITLE} - {milliseconds:.1} ms a frame"));
             shown = Some(camera);
         }
-        // Idle, only the keys are read, and the frame is shown again every 10th step (6 times a
-        // second) because X forgets what a covered window showed.
-        if moved || steps % 10 == 0 {
+        // Idle, only the keys are read; the frame is shown again now and then, as X forgets what
+        // a covered window showed.
+        if moved || steps.is_multiple_of(REDRAW_STEPS) {
             window.update_with_buffer(&frame, WIDTH, VIEW).ok(); // it fails only for a wrong size
         } else {
             window.update();

@@ -10,7 +10,7 @@ pub const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
 pub const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
 const ODD_SQUARE: f64 = 0.25; // the share of the light the checkerboard's odd squares reflect
 const SCREEN_DISTANCE: f64 = 1.0; // the slide's d: a screen 2 wide at distance 1 sees 90 degrees
-const SELF_HIT: f64 = 1e-6; // a hit is lifted off its surface by this, times 1 + its distance from 0
+const SELF_HIT: f64 = 1e-6; // a ray leaving a surface starts this far off it, times 1 + |point|
 
 // Vector math: points, directions and colours (x, y, z = red, green, blue) are all a Vec3.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -74,6 +74,13 @@ impl Ray {
             direction,
             t,
         }
+    }
+    /// A ray leaving a surface at `point`, on the side its `normal` faces. It starts lifted off
+    /// the surface, further than the point's rounding error (which grows with its distance from 0),
+    /// so that it does not hit that surface again.
+    pub fn leaving(point: Vec3, normal: Vec3, direction: Vec3, t: f64) -> Ray {
+        let lift = SELF_HIT * (1.0 + point.length());
+        Ray::new(point + normal * lift, direction, t)
     }
     pub fn at(&self, t: f64) -> Vec3 {
         self.origin + self.direction * t
@@ -219,8 +226,7 @@ impl Default for Scene {
 
 // Shading: colour = surface × (ambient + (1 - ambient) N.L where the shadow ray reaches the light),
 // mixed by the reflectivity with the colour the mirror ray R = D - 2(D.N)N brings back.
-/// Where a ray hits: the point (lifted off the surface), the unit normal on the ray's side, the
-/// material.
+/// Where a ray hits: the point, the unit normal on the ray's side, the material.
 pub type Hit = (Vec3, Vec3, Material);
 
 impl Scene {
@@ -241,16 +247,13 @@ impl Scene {
         };
         // Surfaces are two-sided: N is turned to the side the ray comes from, N = -sign(D.N) N.
         let normal = outward * -outward.dot(ray.direction).signum();
-        // The point is lifted off the surface on that side, further than its rounding error
-        // (which grows with its distance from 0), so that rays leaving it miss that surface.
-        let lifted = point + normal * (SELF_HIT * (1.0 + point.length()));
-        Some((lifted, normal, *material))
+        Some((point, normal, *material))
     }
 
     /// The shadow ray from a point to the light; none where the surface faces away (N.L <= 0).
     pub fn shadow_ray(&self, point: Vec3, normal: Vec3) -> Option<Ray> {
         let to_light = self.light - point;
-        let ray = Ray::new(point, to_light, to_light.length());
+        let ray = Ray::leaving(point, normal, to_light, to_light.length());
         (ray.direction.dot(normal) > 0.0).then_some(ray)
     }
 
@@ -290,7 +293,7 @@ impl Scene {
 /// The mirror ray from a hit: R = D - 2(D.N)N.
 pub fn mirror_ray(ray: &Ray, point: Vec3, normal: Vec3) -> Ray {
     let mirrored = ray.direction - normal * (2.0 * ray.direction.dot(normal));
-    Ray::new(point, mirrored, f64::INFINITY)
+    Ray::leaving(point, normal, mirrored, f64::INFINITY)
 }
 
 // Rendering: the 3D view's rows dealt out to all cores, then the 2D slice beside them.

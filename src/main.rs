@@ -141,7 +141,7 @@ pub struct Material {
 
 impl Shape {
     /// The distance t of the ray's first hit with 0 < t < ray.t, if any.
-    #[inline(always)] // for speed: inlined into each loop over the objects (6% faster here)
+    #[inline(always)] // for speed: inlined into each loop over the objects (10% faster here)
     pub fn intersect(&self, ray: &Ray) -> Option<f64> {
         let ahead = |t: f64| (t > 0.0 && t < ray.t).then_some(t);
         match *self {
@@ -310,9 +310,10 @@ pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
             scope.spawn(|| {
                 while let Some((y, row)) = next_row() {
                     let v = 1.0 - pixel_center(y); // rows count down from the top, v up from p0
-                    // For speed (the same image, 20% faster): the row's rays lie in one plane through
-                    // the eye, so their nearest hits are searched only among the planes and the
-                    // spheres it cuts. Its normal is at right angles to right and to dV + (2v-1)up.
+                    // For speed (the same image, a fifth fewer instructions, 5% faster here): the row's
+                    // rays lie in one plane through the eye, so their nearest hits are searched only
+                    // among the planes and the spheres it cuts. Its normal is at right angles to
+                    // right and to dV + (2v - 1) up.
                     let row_plane = (up * SCREEN_DISTANCE - view * (2.0 * v - 1.0)).normalize();
                     let reachable = |(shape, _): &&(Shape, Material)| match shape {
                         Shape::Sphere { .. } => shape.cut(camera.position, row_plane).is_some(),
@@ -320,7 +321,8 @@ pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
                     };
                     let objects = scene.objects.iter().filter(reachable).copied().collect();
                     let row_scene = Scene { objects, ..*scene };
-                    // For speed: all the row's rays first, so that their square roots overlap.
+                    // For speed: all the row's rays first, so that their square roots overlap (a
+                    // fifth faster here).
                     let mut rays: Vec<Ray> =
                         (0..VIEW).map(|x| primary_ray(pixel_center(x), v)).collect();
                     for (pixel, ray) in row[..VIEW].iter_mut().zip(&mut rays) {

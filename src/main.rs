@@ -403,11 +403,8 @@ fn draw_line(frame: &mut [u32], from: Vec3, to: Vec3, color: u32) {
 fn follow(frame: &mut [u32], scene: &Scene, mut ray: Ray, colors: [u32; 2]) -> Option<Hit> {
     let hit = scene.nearest_hit(&mut ray);
     let [hit_color, miss_color] = colors;
-    draw_ray(
-        frame,
-        &ray,
-        if hit.is_some() { hit_color } else { miss_color },
-    );
+    let color = if hit.is_some() { hit_color } else { miss_color };
+    draw_ray(frame, &ray, color);
     hit
 }
 

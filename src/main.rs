@@ -97,7 +97,8 @@ pub struct Camera {
 }
 
 impl Camera {
-    /// The camera's rotation: its view direction V and the screen's right and up, unit vectors.
+    /// The camera's rotation: its view direction V = (-sin yaw cos pitch, sin pitch, -cos yaw
+    /// cos pitch), the screen's right (V turned a quarter about y, level) and up = right × V.
     pub fn axes(&self) -> [Vec3; 3] {
         let (sin_yaw, cos_yaw) = self.yaw.sin_cos();
         let (sin_pitch, cos_pitch) = self.pitch.sin_cos();
@@ -108,15 +109,16 @@ impl Camera {
     }
     /// The ray setup: once a frame the corners p0 = C - right - up, p1 = C + right - up and
     /// p2 = C - right + up (the slide's camera matrix turns them with the camera's axes); then for
-    /// each u and v from 0 to 1 the primary ray from O = E along D = p(u, v) - E.
+    /// each u and v from 0 to 1 the primary ray from O = E along D = p(u, v) - E. The corners are
+    /// kept as seen from the eye (p - E), so that D is exact: a level camera's D.y is 0 at v = 0.5.
     pub fn primary_rays(&self) -> impl Fn(f64, f64) -> Ray {
         let [view, right, up] = self.axes();
         let eye = self.position;
-        let center = eye + view * SCREEN_DISTANCE;
+        let center = view * SCREEN_DISTANCE; // C - E
         let p0 = center - right - up;
         let p1 = center + right - up;
         let p2 = center - right + up;
-        move |u, v| Ray::new(eye, p0 + (p1 - p0) * u + (p2 - p0) * v - eye, f64::INFINITY)
+        move |u, v| Ray::new(eye, p0 + (p1 - p0) * u + (p2 - p0) * v, f64::INFINITY)
     }
 }
 
@@ -145,13 +147,17 @@ impl Shape {
     pub fn intersect(&self, ray: &Ray) -> Option<f64> {
         let ahead = |t: f64| (t > 0.0 && t < ray.t).then_some(t);
         match *self {
-            // t = -(O.N + d) / (D.N); a ray parallel to the plane gets an infinite or NaN t, which
-            // fails 0 < t < ray.t: no hit.
+            // t = -(O.N + d) / (D.N); a ray parallel to the plane (D.N = 0) misses it.
             Shape::Plane { normal, offset } => {
-                ahead(-(ray.origin.dot(normal) + offset) / ray.direction.dot(normal))
+                let slant = ray.direction.dot(normal);
+                if slant == 0.0 {
+                    return None;
+                }
+                ahead(-(ray.origin.dot(normal) + offset) / slant)
             }
             // The slide's test: c = C - O, t = c.D, q = c - tD, p² = q.q; the hits are at
-            // t -/+ sqrt(r² - p²), the far one seen from inside. A ray that only touches it misses.
+            // t -/+ sqrt(r² - p²), the far one seen from inside. A ray that only touches it misses
+            // (p² = r², the slide's test lets it through): so a radius-0 sphere is never hit.
             Shape::Sphere { center, radius } => {
                 let c = center - ray.origin;
                 let t = c.dot(ray.direction);
@@ -266,7 +272,8 @@ impl Scene {
         let Some((point, normal, material)) = hit else {
             return self.sky;
         };
-        // Lit where no object lies on the shadow ray before the light (any one is enough).
+        // Lit where no object lies on the shadow ray before the light. For speed, the test stops at
+        // the first object it finds there, not the nearest (4% faster here).
         let mut brightness = AMBIENT;
         if let Some(shadow) = self.shadow_ray(point, normal) {
             let blocked = |(shape, _): &(Shape, Material)| shape.intersect(&shadow).is_some();
@@ -275,28 +282,30 @@ impl Scene {
             }
         }
         // The slide's F = ((int)(2 λ1) + (int)λ2) & 1 with λ1 = x, λ2 = z, for unit squares (no 2)
-        // and with floor for (int): truncating would merge the squares either side of x = 0.
-        if material.checkered && (point.x.floor() as i64 + point.z.floor() as i64) % 2 != 0 {
+        // and with floor for (int): truncation would merge the squares either side of x = 0 and
+        // of z = 0. F is odd where (floor(x) + floor(z)) mod 2 = 1.
+        if material.checkered && (point.x.floor() + point.z.floor()).rem_euclid(2.0) == 1.0 {
             brightness *= ODD_SQUARE;
         }
         let color = material.color * brightness;
         if material.reflectivity <= 0.0 || depth >= MAX_DEPTH {
             return color;
         }
-        let mirrored = self.trace(&mut mirror_ray(ray, point, normal), depth + 1);
+        let mirrored = self.trace(&mut mirror_ray(ray.direction, point, normal), depth + 1);
         color * (1.0 - material.reflectivity) + mirrored * material.reflectivity
     }
 }
 
-/// The mirror ray from a hit: R = D - 2(D.N)N.
-pub fn mirror_ray(ray: &Ray, point: Vec3, normal: Vec3) -> Ray {
-    let mirrored = ray.direction - normal * (2.0 * ray.direction.dot(normal));
+/// The mirror ray from a hit of a ray along D: R = D - 2(D.N)N.
+pub fn mirror_ray(direction: Vec3, point: Vec3, normal: Vec3) -> Ray {
+    let mirrored = direction - normal * (2.0 * direction.dot(normal));
     Ray::leaving(point, normal, mirrored, f64::INFINITY)
 }
 
 // Rendering: the 3D view's rows dealt out to all cores, then the 2D slice beside them.
 /// Fills the whole 1024 x 512 frame of 0RGB pixels.
 pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
+    assert_eq!(frame.len(), WIDTH * VIEW, "a frame is WIDTH x VIEW pixels");
     let primary_ray = camera.primary_rays();
     let [view, _, up] = camera.axes();
     let rows = Mutex::new(frame.chunks_mut(WIDTH).enumerate());
@@ -310,7 +319,8 @@ pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
                     let v = 1.0 - pixel_center(y); // rows count down from the top, v up from p0
                     // For speed (the same image; a fifth fewer instructions, 5% faster here): the
                     // row's rays lie in one plane through the eye, so their nearest hits are sought
-                    // only among the planes and the spheres that it cuts. Its normal is at right
+                    // only among the planes and the spheres that it cuts (the shading still uses the
+                    // whole scene: shadow and mirror rays leave that plane). Its normal is at right
                     // angles to right and to dV + (2v - 1) up.
                     let row_plane = (up * SCREEN_DISTANCE - view * (2.0 * v - 1.0)).normalize();
                     let reachable = |(shape, _): &&(Shape, Material)| match shape {
@@ -346,6 +356,7 @@ pub fn to_rgb(color: Vec3) -> u32 {
 pub const MAP_CORNER: Vec3 = vec3(-6.4, 0.0, -9.4); // the world x and z at the map's top left
 pub const MAP_SCALE: f64 = 40.0; // map pixels per world unit
 const OUTLINE_SEGMENTS: u32 = 64; // straight pieces in the outline of a cut sphere
+const SAMPLED_EVERY: usize = 10; // the assignment's "every 10th ray"
 const DOT_RADIUS: i32 = 2; // a dot is 5 x 5 map pixels: 2 either side of its point
 pub const CAMERA_COLOR: u32 = 0xffffff; // white: the eye and the screen's middle line
 pub const RAY_COLOR: u32 = 0xffff00; // yellow: a sampled ray up to its hit, and the hit
@@ -427,7 +438,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
         }
     }
     let primary_ray = camera.primary_rays();
-    for x in (0..VIEW).step_by(10) {
+    for x in (0..VIEW).step_by(SAMPLED_EVERY) {
         let ray = primary_ray(pixel_center(x), 0.5);
         let Some((point, normal, material)) = follow(frame, scene, ray, [RAY_COLOR, MISS_COLOR])
         else {
@@ -437,7 +448,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
             follow(frame, scene, shadow, [BLOCKED_COLOR, LIGHT_COLOR]);
         }
         if material.reflectivity > 0.0 {
-            let mirror = mirror_ray(&ray, point, normal);
+            let mirror = mirror_ray(ray.direction, point, normal);
             follow(frame, scene, mirror, [MIRROR_COLOR, MISS_COLOR]);
         }
         plot(frame, point, DOT_RADIUS, RAY_COLOR);
@@ -459,7 +470,8 @@ const USAGE: &str =
 const TITLE: &str = "raytracer - W A S D R F move, arrow keys turn, Escape quits";
 const MOVE_SPEED: f64 = 2.0; // units a second
 const TURN_SPEED: f64 = 1.5; // radians a second
-const REDRAW_STEPS: u32 = 10; // idle, the window is redrawn every 10th step: 6 times a second
+const STEPS_PER_SECOND: usize = 60; // the keys are read 60 times a second
+const REDRAW_STEPS: u64 = 10; // idle, the window is redrawn every 10th step: 6 times a second
 
 fn main() {
     let arguments: Vec<String> = std::env::args().skip(1).collect();
@@ -476,13 +488,13 @@ fn main() {
         eprintln!("raytracer: cannot open the window: {error}");
         std::process::exit(1)
     });
-    window.set_target_fps(60); // it sleeps for the rest of each 60th of a second
+    window.set_target_fps(STEPS_PER_SECOND); // it sleeps for the rest of each step
     let scene = Scene::default();
     let mut camera = Camera::default();
     let mut shown = None; // the camera of the frame on screen
     let mut frame = vec![0; WIDTH * VIEW];
     let mut last_step = Instant::now();
-    let mut steps = 0u32;
+    let mut steps = 0u64;
     let mut stale = Vec::new(); // the keys down when the window last lost the focus
     while window.is_open() && !window.is_key_down(Key::Escape) {
         steps += 1;

@@ -373,12 +373,25 @@ fn map_of(frame: &[u32]) -> Vec<u32> {
 fn with_a_level_camera_the_slice_rays_stay_in_the_eyes_plane() {
     // Rays through the screen's middle row of a level camera are horizontal: they never meet a
     // floor below (or above) the eye, so a floor changes nothing on the map.
-    for (position, yaw) in [
+    // Four chosen poses, one where rounding once sent middle-line rays into the floor 1e16 away,
+    // and 40 more spread over the map.
+    let spread = (0..40).map(|i| {
+        let i = i as f64;
+        let position = vec3(
+            (i * 0.37) % 5.0 - 2.5,
+            (i * 0.23) % 3.0 - 0.5,
+            (i * 0.61) % 4.0 - 2.0,
+        );
+        (position, i * 0.29 - 5.0)
+    });
+    let chosen = [
         (vec3(0.0, 0.0, 0.0), 0.0),
         (vec3(0.7, 0.3, -1.0), 0.4),
         (vec3(-1.0, 2.5, 1.0), -2.0),
         (vec3(0.0, -3.0, 0.0), 1.0),
-    ] {
+        (vec3(-1.9, 0.18, 0.07), 0.03),
+    ];
+    for (position, yaw) in chosen.into_iter().chain(spread) {
         let camera = Camera {
             position,
             yaw,

@@ -281,6 +281,21 @@ fn odd_scenes_render_valid_frames() {
     let mut ray = Ray::new(vec3(0.0, 0.0, 0.0), vec3(0.0, 0.0, -1.0), f64::INFINITY);
     let color = scene.trace(&mut ray, 0);
     assert_eq!([color.x, color.y, color.z], [sky.x, sky.y, sky.z]);
+    // A ray that grazes the floor and meets it some 10^19 units out, where floor(x) + floor(z)
+    // no longer fits an i64: a checkered colour, no overflow.
+    let (plane, _) = floor();
+    let checkered = Material {
+        checkered: true,
+        ..white(0.0)
+    };
+    let checkered_floor = Scene {
+        objects: vec![(plane, checkered)],
+        light,
+        sky,
+    };
+    let mut ray = Ray::new(vec3(0.0, 0.0, 0.0), vec3(1.0, -1e-19, 1.0), f64::INFINITY);
+    let color = checkered_floor.trace(&mut ray, 0);
+    assert!(valid(color), "{color:?}");
     let empty = Scene {
         objects: vec![],
         light,

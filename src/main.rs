@@ -283,8 +283,10 @@ impl Scene {
         }
         // The slide's F = ((int)(2 λ1) + (int)λ2) & 1 with λ1 = x, λ2 = z, for unit squares (no 2)
         // and with floor for (int): truncation would merge the squares either side of x = 0 and
-        // of z = 0. F is odd where (floor(x) + floor(z)) mod 2 = 1.
-        if material.checkered && (point.x.floor() + point.z.floor()).rem_euclid(2.0) == 1.0 {
+        // of z = 0. The sum wraps instead of overflowing 10^19 units out, where any parity will do.
+        if material.checkered
+            && (point.x.floor() as i64).wrapping_add(point.z.floor() as i64) % 2 != 0
+        {
             brightness *= ODD_SQUARE;
         }
         let color = material.color * brightness;

@@ -455,13 +455,8 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
         }
         plot(frame, point, DOT_RADIUS, RAY_COLOR);
     }
-    let screen_center = eye + view * SCREEN_DISTANCE; // the screen's middle line, over the rays
-    draw_line(
-        frame,
-        screen_center - right,
-        screen_center + right,
-        CAMERA_COLOR,
-    );
+    let screen = eye + view * SCREEN_DISTANCE; // C: the screen's middle line, over the rays
+    draw_line(frame, screen - right, screen + right, CAMERA_COLOR);
     plot(frame, scene.light, DOT_RADIUS, LIGHT_COLOR);
     plot(frame, eye, DOT_RADIUS, CAMERA_COLOR);
 }

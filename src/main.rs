@@ -370,9 +370,10 @@ pub const MIRROR_COLOR: u32 = 0x00e0ff; // cyan: a mirror ray, up to what it hit
 /// Colours the map pixels up to `radius` pixels either side of a world point, where on the map.
 fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
     let on_map = 0.0..VIEW as f64;
+    let middle = (point - MAP_CORNER) * MAP_SCALE; // the point in map pixels
     for dx in -radius..=radius {
         for dz in -radius..=radius {
-            let pixel = (point - MAP_CORNER) * MAP_SCALE + vec3(dx as f64, 0.0, dz as f64);
+            let pixel = middle + vec3(dx as f64, 0.0, dz as f64);
             if on_map.contains(&pixel.x) && on_map.contains(&pixel.z) {
                 frame[pixel.z as usize * WIDTH + VIEW + pixel.x as usize] = color;
             }

@@ -381,26 +381,19 @@ fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
     }
 }
 
-/// Draws p(t) for 0 <= t <= ray.t seen from above, as the line algorithm DDA does: a dot in each
-/// map column whose middle it passes (or each row, if it runs more along z than along x), and only
-/// in the columns on the map, wherever its ends are.
+/// Draws p(t) for 0 <= t <= ray.t seen from above: a dot a map pixel apart, where it can be on
+/// the map (no further than VIEW pixels from the map's middle), wherever its ends are.
 fn draw_ray(frame: &mut [u32], ray: &Ray, color: u32) {
-    let along_x = ray.direction.x.abs() >= ray.direction.z.abs();
-    let axis = |v: Vec3| if along_x { v.x } else { v.z };
-    let slope = axis(ray.direction) * MAP_SCALE; // map columns (or rows) per unit of t
-    if slope == 0.0 {
+    let speed = ray.direction.x.hypot(ray.direction.z) * MAP_SCALE; // map pixels per unit of t
+    if speed == 0.0 {
         return; // straight up or down: the dot at its start shows it
     }
-    let start = (axis(ray.origin) - axis(MAP_CORNER)) * MAP_SCALE; // where p(0) is, in columns
-    let end = start + slope * ray.t;
-    let first = (start.min(end) - 0.5).ceil().max(0.0);
-    let last = (start.max(end) - 0.5).floor().min(VIEW as f64 - 1.0);
-    if first > last {
-        return; // it crosses no column's middle on the map
-    }
-    for column in first as usize..=last as usize {
-        let t = (column as f64 + 0.5 - start) / slope; // p(t) is in the column's middle
-        plot(frame, ray.at(t), 0, color);
+    let start = (ray.origin - MAP_CORNER) * MAP_SCALE - vec3(0.5, 0.0, 0.5) * VIEW as f64;
+    let from_middle = start.x.hypot(start.z); // p(0)'s distance from the map's middle, in pixels
+    let first = (from_middle - VIEW as f64).max(0.0);
+    let last = (ray.t * speed).min(from_middle + VIEW as f64);
+    for step in first as usize..=last as usize {
+        plot(frame, ray.at(step as f64 / speed), 0, color);
     }
 }
 

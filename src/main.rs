@@ -486,19 +486,17 @@ fn main() {
     let mut frame = vec![0; WIDTH * VIEW];
     let mut last_step = Instant::now();
     let mut steps = 0u64;
-    let mut stale = Vec::new(); // the keys down when the window last lost the focus
+    let mut stale = Vec::new(); // keys down while the window lacked the focus, not yet let go
     while window.is_open() && !window.is_key_down(Key::Escape) {
         steps += 1;
-        let elapsed = last_step.elapsed().as_secs_f64();
+        let dt = last_step.elapsed().as_secs_f64();
         last_step = Instant::now();
         // X11 does not tell a window of a key let go while it lacks the focus, so the key stays
-        // down: keys count only while it has the focus, and not those that were down when it
-        // lost it, until they are let go again.
+        // down: while it lacks the focus every key down is stale, and stays so until let go.
         if !window.is_active() {
             stale = window.get_keys();
         }
         stale.retain(|&key| window.is_key_down(key));
-        let dt = if window.is_active() { elapsed } else { 0.0 };
         let down = |key| window.is_key_down(key) && !stale.contains(&key);
         let held = |key| if down(key) { dt } else { 0.0 };
         let [view, right, _] = camera.axes();

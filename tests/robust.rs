@@ -1,4 +1,4 @@
-//! Any camera, any scene, any command line: no panic, no NaN, a clear message.
+//! Any camera, any scene, no display: no panic, no NaN, a clear message.
 #[allow(dead_code)]
 #[path = "../src/main.rs"]
 mod raytracer;
@@ -8,14 +8,21 @@ use std::f64::consts::{FRAC_PI_2, TAU};
 use std::process::Command;
 
 /// A small deterministic pseudo-random generator (xorshift64*), so a failure can be replayed.
-struct Random(u64);
+struct Random {
+    state: u64,
+}
 
 impl Random {
+    fn new(seed: u64) -> Random {
+        Random { state: seed }
+    }
+    /// A number from 0 up to 1.
     fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
+        self.state ^= self.state >> 12;
+        self.state ^= self.state << 25;
+        self.state ^= self.state >> 27;
+        let bits = self.state.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11; // the top 53 bits
+        bits as f64 / (1u64 << 53) as f64
     }
     fn between(&mut self, low: f64, high: f64) -> f64 {
         low + (high - low) * self.next()
@@ -84,9 +91,9 @@ fn random_camera(random: &mut Random) -> Camera {
     }
 }
 
-/// The centre of pixel `i` of a row or column, as a fraction of the view's width.
-fn center(i: usize) -> f64 {
-    (i as f64 + 0.5) / VIEW as f64
+/// The primary ray through the centre of pixel (x, y) of the 3D view.
+fn primary_ray(camera: &Camera, x: usize, y: usize) -> Ray {
+    camera.primary_rays()(x as f64 + 0.5, y as f64 + 0.5)
 }
 
 fn valid(color: Vec3) -> bool {
@@ -96,28 +103,32 @@ fn valid(color: Vec3) -> bool {
 }
 
 fn assert_valid_frame(scene: &Scene, camera: &Camera, case: &str) {
-    let (mut first, mut second) = (vec![0; WIDTH * VIEW], vec![0; WIDTH * VIEW]);
-    render(scene, camera, &mut first);
-    render(scene, camera, &mut second);
-    assert!(first == second, "{case}: two renders differ");
+    let mut fresh = vec![0; WIDTH * VIEW];
+    render(scene, camera, &mut fresh);
+    // The same frame again, over one that holds another picture: every pixel is drawn anew.
+    let mut reused = vec![0; WIDTH * VIEW];
+    render(&Scene::default(), &Camera::default(), &mut reused);
+    render(scene, camera, &mut reused);
+    assert!(
+        fresh == reused,
+        "{case}: the frame depends on what the buffer held"
+    );
 }
 
 /// Traces a spread of rays through the screen and checks every colour is a valid one.
 fn assert_valid_rays(scene: &Scene, camera: &Camera, case: &str) {
-    let primary_ray = camera.primary_rays();
     for (x, y) in (0..VIEW)
         .step_by(73)
         .flat_map(|x| (0..VIEW).step_by(61).map(move |y| (x, y)))
     {
-        let mut ray = primary_ray(center(x), center(y));
-        let color = scene.trace(&mut ray, 0);
+        let color = scene.trace(primary_ray(camera, x, y), 0);
         assert!(valid(color), "{case}: pixel {x}, {y} is {color:?}");
     }
 }
 
 /// A seeded random camera pose, in a random scene for every `nth` seed and the demo otherwise.
 fn random_case(seed: u64, nth: u64) -> (Scene, Camera) {
-    let mut random = Random(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15));
+    let mut random = Random::new(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15));
     let scene = if seed.is_multiple_of(nth) {
         random_scene(&mut random)
     } else {
@@ -138,44 +149,9 @@ fn a_thousand_camera_poses_and_hundreds_of_random_scenes() {
     }
 }
 
-/// The 3D view traces each row against only the objects its fan of rays can reach; tracing every
-/// pixel against all objects must give the same picture.
-fn assert_culling_changes_no_pixel(scene: &Scene, camera: &Camera, case: &str) {
-    let mut frame = vec![0; WIDTH * VIEW];
-    render(scene, camera, &mut frame);
-    let primary_ray = camera.primary_rays();
-    for (y, row) in frame.chunks(WIDTH).enumerate() {
-        for (x, &pixel) in row[..VIEW].iter().enumerate() {
-            let mut ray = primary_ray(center(x), 1.0 - center(y));
-            let every_object = to_rgb(scene.trace(&mut ray, 0));
-            assert_eq!(pixel, every_object, "{case}: pixel {x}, {y}");
-        }
-    }
-}
-
-#[test]
-fn leaving_out_the_objects_a_row_cannot_reach_changes_no_pixel() {
-    for seed in 2001..=2024u64 {
-        let (scene, camera) = random_case(seed, 2);
-        assert_culling_changes_no_pixel(&scene, &camera, &format!("seed {seed}: {scene:?}"));
-    }
-    // The demo with a wall at x = 2 or x = -2: planes beside the balls, seen by every row.
-    for normal in [vec3(-1.0, 0.0, 0.0), vec3(1.0, 0.0, 0.0)] {
-        let mut scene = Scene::default();
-        scene.objects.push((
-            Shape::Plane {
-                normal,
-                offset: 2.0,
-            },
-            white(0.0),
-        ));
-        assert_culling_changes_no_pixel(&scene, &Camera::default(), &format!("{normal:?}"));
-    }
-}
-
 #[test]
 fn hits_are_in_front_of_the_ray_and_on_the_surface() {
-    let mut random = Random(7);
+    let mut random = Random::new(7);
     for case in 0..20_000 {
         let ray = Ray::new(random.point(10.0), random.point(1.0), f64::INFINITY);
         let radius = random.between(0.0, 4.0);
@@ -278,8 +254,8 @@ fn odd_scenes_render_valid_frames() {
         light,
         sky,
     };
-    let mut ray = Ray::new(vec3(0.0, 0.0, 0.0), vec3(0.0, 0.0, -1.0), f64::INFINITY);
-    let color = scene.trace(&mut ray, 0);
+    let ray = Ray::new(vec3(0.0, 0.0, 0.0), vec3(0.0, 0.0, -1.0), f64::INFINITY);
+    let color = scene.trace(ray, 0);
     assert_eq!([color.x, color.y, color.z], [sky.x, sky.y, sky.z]);
     // A ray that grazes the floor and meets it some 10^19 units out, where floor(x) + floor(z)
     // no longer fits an i64: a checkered colour, no overflow.
@@ -293,8 +269,8 @@ fn odd_scenes_render_valid_frames() {
         light,
         sky,
     };
-    let mut ray = Ray::new(vec3(0.0, 0.0, 0.0), vec3(1.0, -1e-19, 1.0), f64::INFINITY);
-    let color = checkered_floor.trace(&mut ray, 0);
+    let ray = Ray::new(vec3(0.0, 0.0, 0.0), vec3(1.0, -1e-19, 1.0), f64::INFINITY);
+    let color = checkered_floor.trace(ray, 0);
     assert!(valid(color), "{color:?}");
     let empty = Scene {
         objects: vec![],
@@ -320,11 +296,9 @@ fn a_light_inside_a_sphere_leaves_everything_else_in_shadow() {
         sky: vec3(0.0, 0.0, 0.0),
     };
     let camera = Camera::default();
-    let primary_ray = camera.primary_rays();
     for y in (0..VIEW).step_by(8) {
         for x in (0..VIEW).step_by(8) {
-            let mut ray = primary_ray(center(x), center(y));
-            let color = scene.trace(&mut ray, 0);
+            let color = scene.trace(primary_ray(&camera, x, y), 0);
             assert!(
                 color.x <= AMBIENT + 1e-9,
                 "pixel {x}, {y} is lit: {color:?}"
@@ -360,10 +334,9 @@ fn facing_mirrors_stop_at_the_maximum_depth() {
         light: vec3(0.0, 0.0, -3.0),
         sky: vec3(0.5, 0.7, 1.0),
     };
-    let mut ray = Ray::new(vec3(0.0, 0.0, 0.0), vec3(0.0, -1.0, -0.1), f64::INFINITY);
-    let color = scene.trace(&mut ray, 0);
+    let ray = Ray::new(vec3(0.0, 0.0, 0.0), vec3(0.0, -1.0, -0.1), f64::INFINITY);
+    let color = scene.trace(ray, 0);
     assert!(valid(color), "{color:?}");
-    const { assert!(MAX_DEPTH >= 3) }; // the assignment asks for at least 3 bounces
     let ends_on_ceiling = MAX_DEPTH % 2 == 1;
     assert_eq!(color.x == 0.0, ends_on_ceiling, "{color:?}");
     assert_eq!(color.z == 0.0, !ends_on_ceiling, "{color:?}");
@@ -387,44 +360,15 @@ fn run(args: &[&str]) -> (Option<i32>, String, String) {
 }
 
 #[test]
-fn no_display_or_a_wrong_argument_gets_one_line_and_a_status() {
-    let (status, stdout, stderr) = run(&[]);
-    assert_eq!(status, Some(1), "no display: {stderr}");
-    assert_eq!(stderr.lines().count(), 1, "{stderr}");
-    // The line says what failed: opening the window, because the X display could not be opened.
-    assert!(stderr.contains("cannot open the window"), "{stderr}");
-    assert!(stderr.contains("Display") && stdout.is_empty(), "{stderr}");
-    for args in [&["--bench"][..], &["-h"], &["scene.txt"], &["--help", "2"]] {
+fn with_no_display_it_says_so_in_one_line_and_ignores_arguments() {
+    for args in [&[][..], &["--help"], &["scene.txt", "2"]] {
         let (status, stdout, stderr) = run(args);
-        assert_eq!(status, Some(2), "{args:?}: {stderr}");
-        assert!(
-            stderr.contains("usage") && stderr.lines().count() == 1,
-            "{args:?}: {stderr}"
-        );
-        assert!(stdout.is_empty(), "{args:?}");
+        assert_eq!(status, Some(1), "{args:?}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        // The line says what failed: opening the window, as the X display could not be opened.
+        assert!(stderr.contains("cannot open the window"), "{stderr}");
+        assert!(stderr.contains("Display") && stdout.is_empty(), "{stderr}");
     }
-}
-
-#[test]
-fn help_is_a_request_and_a_closed_stdout_is_no_error() {
-    let (status, stdout, stderr) = run(&["--help"]);
-    assert_eq!(status, Some(0), "{stderr}");
-    assert!(
-        stdout.starts_with("usage") && stdout.lines().count() == 1,
-        "{stdout}"
-    );
-    assert!(stderr.is_empty(), "{stderr}");
-    // As in `raytracer --help | head -0`: the reading end is gone before the program writes.
-    let (reader, writer) = std::io::pipe().unwrap();
-    drop(reader);
-    let output = Command::new(env!("CARGO_BIN_EXE_raytracer"))
-        .arg("--help")
-        .stdout(writer)
-        .output()
-        .expect("the program runs");
-    let stderr = String::from_utf8(output.stderr).unwrap();
-    assert_eq!(output.status.code(), Some(0), "{stderr}");
-    assert!(stderr.is_empty(), "{stderr}");
 }
 
 #[test]
@@ -464,7 +408,7 @@ fn far_away_a_ray_leaving_a_plane_does_not_hit_it_again() {
     // A plane tilted at random, at height d above the origin, and a ray from the origin that
     // grazes it 10^4 to 10^11 units away. The mirror ray leaves the plane, which is alone in the
     // scene, so it brings back the sky; the shadow ray to a light high above that point reaches it.
-    let mut random = Random(11);
+    let mut random = Random::new(11);
     let sky = vec3(1.0, 1.0, 1.0);
     let mut failures = Vec::new();
     for case in 0..20_000 {
@@ -484,16 +428,15 @@ fn far_away_a_ray_leaving_a_plane_does_not_hit_it_again() {
             light: vec3(0.0, 0.0, 0.0),
             sky,
         };
-        let mut ray = Ray::new(vec3(0.0, 0.0, 0.0), on_plane, f64::INFINITY);
-        let mirrored = mirror_scene.trace(&mut ray, 0);
+        let ray = Ray::new(vec3(0.0, 0.0, 0.0), on_plane, f64::INFINITY);
+        let mirrored = mirror_scene.trace(ray, 0);
         // A white matte surface straight below the light: fully lit, N.L = 1.
         let lit_scene = Scene {
             objects: vec![(plane, white(0.0))],
             light: on_plane + normal * far,
             sky,
         };
-        let mut ray = Ray::new(vec3(0.0, 0.0, 0.0), on_plane, f64::INFINITY);
-        let lit = lit_scene.trace(&mut ray, 0);
+        let lit = lit_scene.trace(ray, 0);
         if mirrored.x != 0.5 || (lit.x - 1.0).abs() > 1e-3 {
             failures.push((case, far, mirrored.x, lit.x));
         }

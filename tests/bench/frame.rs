@@ -8,7 +8,8 @@ use std::time::Instant;
 
 fn main() {
     // Cargo passes `--bench`; there is nothing to choose.
-    let (scene, camera) = (Scene::default(), Camera::default());
+    let scene = Scene::default();
+    let camera = Camera::default();
     let mut frame = vec![0; WIDTH * VIEW];
     let mut milliseconds: Vec<f64> = (0..100)
         .map(|_| {
@@ -18,7 +19,8 @@ fn main() {
         })
         .collect();
     milliseconds.sort_by(f64::total_cmp);
-    let (median, min) = (milliseconds[50], milliseconds[0]);
+    let median = milliseconds[50];
+    let min = milliseconds[0];
     let fps = 1e3 / median;
     println!(
         "100 frames of the default view: median {median:.2} ms, min {min:.2} ms, {fps:.0} fps"

@@ -50,13 +50,6 @@ impl ops::Sub for Vec3 {
     }
 }
 
-impl ops::Neg for Vec3 {
-    type Output = Vec3;
-    fn neg(self) -> Vec3 {
-        vec3(-self.x, -self.y, -self.z)
-    }
-}
-
 impl ops::Mul<f64> for Vec3 {
     type Output = Vec3;
     fn mul(self, scale: f64) -> Vec3 {
@@ -65,7 +58,7 @@ impl ops::Mul<f64> for Vec3 {
 }
 
 // The ray: p(t) = O + tD with D normalized and 0 < t < ray.t, the distance it reaches so far.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy)]
 pub struct Ray {
     pub origin: Vec3,
     pub direction: Vec3,
@@ -82,14 +75,16 @@ impl Ray {
             t,
         }
     }
-    /// A ray leaving a surface at `point`, on the side its `normal` faces. It starts lifted off
-    /// the surface, further than the point's rounding error, which grows with its largest
-    /// coordinate, so that it does not hit that surface again.
-    pub fn leaving(point: Vec3, normal: Vec3, direction: Vec3, t: f64) -> Ray {
-        let largest = point.x.abs().max(point.y.abs()).max(point.z.abs());
-        Ray::new(point + normal * (SELF_HIT * (1.0 + largest)), direction, t)
+    /// A ray leaving a surface at `point`, lifted off it along its `normal` further than the
+    /// point's rounding error (which grows with its distance from 0), so as not to hit it again.
+    fn leaving(point: Vec3, normal: Vec3, direction: Vec3, t: f64) -> Ray {
+        Ray::new(
+            point + normal * (SELF_HIT * (1.0 + point.length())),
+            direction,
+            t,
+        )
     }
-    pub fn at(&self, t: f64) -> Vec3 {
+    fn at(&self, t: f64) -> Vec3 {
         self.origin + self.direction * t
     }
 }
@@ -104,16 +99,16 @@ pub struct Camera {
 }
 
 /// The camera's rotation: the view direction V, and the screen's right and up directions.
-pub struct Axes {
-    pub view: Vec3,
-    pub right: Vec3,
-    pub up: Vec3,
+struct Axes {
+    view: Vec3,
+    right: Vec3,
+    up: Vec3,
 }
 
 impl Camera {
-    /// V = (-sin yaw cos pitch, sin pitch, -cos yaw cos pitch); right is V turned a quarter
-    /// about y, level; up = right × V.
-    pub fn axes(&self) -> Axes {
+    /// V = (-sin yaw cos pitch, sin pitch, -cos yaw cos pitch), right is V turned a quarter about
+    /// y and level, up = right × V.
+    fn axes(&self) -> Axes {
         let (sin_yaw, cos_yaw) = self.yaw.sin_cos();
         let (sin_pitch, cos_pitch) = self.pitch.sin_cos();
         Axes {
@@ -122,12 +117,11 @@ impl Camera {
             up: vec3(sin_yaw * sin_pitch, cos_pitch, cos_yaw * sin_pitch),
         }
     }
-    /// The ray setup, for a screen of VIEW x VIEW pixels: the corners p0 = C - right - up,
-    /// p1 = C + right - up and p2 = C - right + up (the slide's camera matrix turns them with the
-    /// camera's axes), worked out once per call; then for the point (x, y) of the screen, in pixels
-    /// from its top left, the primary ray from O = E along D = p(u, v) - E, where u = x / VIEW and
-    /// v = 1 - y / VIEW counts up from p0. The corners are kept as seen from the eye (p - E), so
-    /// that D is exact: a level camera's D.y is 0 at v = 0.5.
+    /// The ray setup: the corners p0 = C - right - up, p1 = C + right - up, p2 = C - right + up
+    /// (the camera matrix turns them), once per call; then the primary ray from O = E along
+    /// D = p(u, v) - E through the point (x, y) of the screen, in pixels from its top left:
+    /// u = x / VIEW, v = 1 - y / VIEW. The corners are kept as seen from the eye (p - E), so that
+    /// D is exact: a level camera's D.y is 0 at v = 0.5.
     pub fn primary_rays(&self) -> impl Fn(f64, f64) -> Ray {
         let Axes { view, right, up } = self.axes();
         let eye = self.position;
@@ -135,8 +129,8 @@ impl Camera {
         let p0 = center - right - up;
         let p1 = center + right - up;
         let p2 = center - right + up;
-        // For speed, u(p1 - p0) is x times p1 - p0 per pixel, one multiplication less (3% faster
-        // here, the same D as VIEW is a power of 2), after the v term that a whole row shares.
+        // For speed: u(p1 - p0) as x times p1 - p0 per pixel, after the v term that a row shares
+        // (3% faster here; the same D, as VIEW is a power of 2).
         let across = (p1 - p0) * (1.0 / VIEW as f64);
         move |x, y| {
             let v = 1.0 - y / VIEW as f64;
@@ -172,9 +166,8 @@ impl Shape {
                 }
                 ahead(-(ray.origin.dot(normal) + offset) / slant)
             }
-            // The slide's test: c = C - O, t = c.D, p² = q.q for q = c - tD; the hits are at
-            // t -/+ sqrt(r² - p²), the far one seen from inside. A ray that only touches it misses
-            // (p² = r², the slide's test lets it through): so a radius-0 sphere is never hit.
+            // The slide's test: c = C - O, t = c.D, q = c - tD, p² = q.q; hits at t -/+
+            // sqrt(r² - p²), the far one from inside. Touching (p² = r²) misses: so does radius 0.
             Shape::Sphere { center, radius } => {
                 let c = center - ray.origin;
                 let t = c.dot(ray.direction);
@@ -186,21 +179,6 @@ impl Shape {
                 ahead(t - half_chord).or(ahead(t + half_chord))
             }
         }
-    }
-
-    /// The circle (centre, radius) where a sphere meets the plane through `point` with unit
-    /// normal N: around C - hN, of radius sqrt(r² - h²), where h = (C - point).N is the centre's
-    /// height above the plane. None if |h| >= r, or for a plane.
-    pub fn cut(&self, point: Vec3, normal: Vec3) -> Option<(Vec3, f64)> {
-        let Shape::Sphere { center, radius } = *self else {
-            return None;
-        };
-        let height = (center - point).dot(normal);
-        if height.abs() >= radius {
-            return None;
-        }
-        let circle_radius = (radius * radius - height * height).sqrt();
-        Some((center - normal * height, circle_radius))
     }
 }
 
@@ -251,15 +229,15 @@ impl Default for Scene {
 // Shading: colour = surface × (ambient + (1 - ambient) N.L where the shadow ray reaches the light),
 // mixed by the reflectivity with the colour the mirror ray R = D - 2(D.N)N brings back.
 /// Where a ray hits: the point, the unit normal on the side the ray comes from, the material.
-pub struct Hit<'a> {
-    pub point: Vec3,
-    pub normal: Vec3,
-    pub material: &'a Material, // for speed: a copy of the material measured 2% slower here
+struct Hit<'a> {
+    point: Vec3,
+    normal: Vec3,
+    material: &'a Material, // for speed: a copy of the material measured 2% slower here
 }
 
 impl Scene {
     /// Step 6, the nearest intersection: each object that the ray hits before ray.t shortens it.
-    pub fn nearest_hit(&self, ray: &mut Ray) -> Option<Hit<'_>> {
+    fn nearest_hit(&self, ray: &mut Ray) -> Option<Hit<'_>> {
         let mut nearest = None;
         for (shape, material) in &self.objects {
             if let Some(t) = shape.intersect(ray) {
@@ -274,20 +252,20 @@ impl Scene {
             Shape::Plane { normal, .. } => normal,
         };
         // Surfaces are two-sided: N is turned to the side the ray comes from.
-        let normal = if outward.dot(ray.direction) > 0.0 {
-            -outward
+        let side = if outward.dot(ray.direction) < 0.0 {
+            1.0
         } else {
-            outward
+            -1.0
         };
         Some(Hit {
             point,
-            normal,
+            normal: outward * side,
             material,
         })
     }
 
     /// The shadow ray from a hit to the light; none where the surface faces away (N.L <= 0).
-    pub fn shadow_ray(&self, hit: &Hit) -> Option<Ray> {
+    fn shadow_ray(&self, hit: &Hit) -> Option<Ray> {
         let to_light = self.light - hit.point;
         let ray = Ray::leaving(hit.point, hit.normal, to_light, to_light.length());
         (ray.direction.dot(hit.normal) > 0.0).then_some(ray)
@@ -307,10 +285,7 @@ impl Scene {
                 brightness += (1.0 - AMBIENT) * shadow.direction.dot(hit.normal);
             }
         }
-        // The slide's F = ((int)(2 λ1) + (int)λ2) & 1 with λ1 = x, λ2 = z, for unit squares (no 2)
-        // and with floor for (int): truncation would merge the squares either side of x = 0 and
-        // of z = 0. The sum wraps instead of overflowing 10^19 units out, where any parity will do.
-        if hit.material.checkered && floor(hit.point.x).wrapping_add(floor(hit.point.z)) & 1 == 1 {
+        if hit.material.checkered && odd_square(hit.point) {
             brightness *= ODD_SQUARE;
         }
         let color = hit.material.color * brightness;
@@ -322,28 +297,29 @@ impl Scene {
     }
 
     /// The colour a mirror shows: what its mirror ray brings back.
-    #[inline(never)] // for speed: `trace` recurses through here, so it is not recursive itself and
-    // can be inlined (LLVM does not inline a function that calls itself)
+    #[inline(never)] // for speed: `trace` recurses through here, so LLVM can inline it (it never
+    // inlines a function that calls itself)
     fn mirrored(&self, direction: Vec3, hit: &Hit, depth: u32) -> Vec3 {
         self.trace(mirror_ray(direction, hit), depth + 1)
     }
 }
 
 /// The mirror ray from a hit of a ray along D: R = D - 2(D.N)N.
-pub fn mirror_ray(direction: Vec3, hit: &Hit) -> Ray {
+fn mirror_ray(direction: Vec3, hit: &Hit) -> Ray {
     let mirrored = direction - hit.normal * (2.0 * direction.dot(hit.normal));
     Ray::leaving(hit.point, hit.normal, mirrored, f64::INFINITY)
 }
 
-/// floor(w) as an integer, saturating far out. For speed: `f64::floor` is a software routine on
-/// the baseline x86-64 target (5% slower here); this truncates, then steps down below 0.
-fn floor(w: f64) -> i64 {
-    let truncated = w as i64;
-    if (truncated as f64) > w {
-        truncated.wrapping_sub(1)
-    } else {
-        truncated
-    }
+/// The slide's checkerboard F = ((int)(2 λ1) + (int)λ2) & 1 with λ1 = x, λ2 = z, for unit squares
+/// (no 2) and with floor for (int): truncation would merge the squares either side of 0.
+fn odd_square(point: Vec3) -> bool {
+    // For speed, floor is truncation, one lower where that rounded up: f64::floor is a software
+    // routine on the baseline x86-64 target (5% slower here). The sum wraps 10^19 units out.
+    let floor = |w: f64| {
+        let truncated = w as i64;
+        truncated.wrapping_sub(i64::from(truncated as f64 > w))
+    };
+    floor(point.x).wrapping_add(floor(point.z)) & 1 == 1
 }
 
 // Rendering, the slide's step 6: for each pixel, the colour of its primary ray, on all cores.
@@ -377,11 +353,10 @@ pub fn to_rgb(color: Vec3) -> u32 {
     byte(color.x) << 16 | byte(color.y) << 8 | byte(color.z)
 }
 
-// The 2D slice: the assignment's "y = 0", every 10th ray of the screen's middle row with its hit,
-// shadow and mirror rays, seen from straight above (x to the right, -z up). The slide's y = 0 is the
-// plane of that row for the start pose; here it is that row's plane in every pose (through the eye,
-// holding V and right: it tilts as the camera pitches), so that the sampled rays lie in it and
-// meet the outlines where they hit. Seen from above, a tilted plane looks squashed.
+// The 2D slice, the assignment's "for y = 0, visualize every 10th ray", seen from straight above
+// (x to the right, -z up). The slide's y = 0 is the plane of the screen's middle row in the start
+// pose; it is taken as that row's plane in every pose (through the eye, holding V and right, tilted
+// as the camera pitches), so that the sampled rays lie in it and meet the outlines where they hit.
 pub const MAP_CORNER: Vec3 = vec3(-6.4, 0.0, -9.4); // top left x and z: 12.8 units around the demo
 pub const MAP_SCALE: f64 = 40.0; // map pixels per world unit
 const MIDDLE_ROW: f64 = VIEW as f64 / 2.0; // the screen's middle row (v = 0.5), from its top
@@ -391,11 +366,11 @@ const MARKER_RADIUS: i32 = 3; // the light and the eye are 7 x 7
 pub const BACKGROUND: u32 = 0x000000; // black
 pub const CAMERA_COLOR: u32 = 0xff00ff; // magenta: the eye and the screen's middle row
 pub const RAY_COLOR: u32 = 0xffff00; // yellow: a sampled ray up to its hit, and the hit
-pub const MISS_COLOR: u32 = 0x808000; // olive: a sampled ray that hits nothing, to the map's edge
+pub const MISS_COLOR: u32 = 0x909000; // olive: a sampled ray that hits nothing, to the map's edge
 pub const LIGHT_COLOR: u32 = 0xff8000; // orange: the light
-pub const SHADOW_COLOR: u32 = 0x985000; // brown: a shadow ray that reaches the light
-pub const BLOCKED_COLOR: u32 = 0x7838c0; // violet: a shadow ray, up to what blocks it
-pub const MIRROR_COLOR: u32 = 0x008c8c; // teal: a mirror ray, up to its hit or the map's edge
+pub const SHADOW_COLOR: u32 = 0x983800; // rust: a shadow ray that reaches the light
+pub const BLOCKED_COLOR: u32 = 0x7838c0; // violet: a shadow ray up to what blocks it, and that
+pub const MIRROR_COLOR: u32 = 0x008c8c; // teal: a mirror ray up to its hit and the hit, or the edge
 
 /// Colours the map pixels up to `radius` pixels either side of a world point, where on the map.
 fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
@@ -437,27 +412,18 @@ fn draw_line(frame: &mut [u32], from: Vec3, to: Vec3, color: u32) {
     draw_ray(frame, &Ray::new(from, to - from, length), color);
 }
 
-/// Follows a ray to its nearest hit and draws it that far: in `hit_color` if it hits something
-/// before ray.t, in `miss_color` if not.
-fn follow<'a>(
-    frame: &mut [u32],
-    scene: &'a Scene,
-    mut ray: Ray,
-    hit_color: u32,
-    miss_color: u32,
-) -> Option<Hit<'a>> {
-    let hit = scene.nearest_hit(&mut ray);
-    draw_ray(
-        frame,
-        &ray,
-        if hit.is_some() { hit_color } else { miss_color },
-    );
-    hit
+/// Follows a ray to its nearest hit and draws it: up to the hit with a dot there in `hit_color`,
+/// or, if it hits nothing before ray.t, that far in `miss_color`.
+fn follow(frame: &mut [u32], scene: &Scene, mut ray: Ray, hit_color: u32, miss_color: u32) {
+    let Some(hit) = scene.nearest_hit(&mut ray) else {
+        return draw_ray(frame, &ray, miss_color);
+    };
+    draw_ray(frame, &ray, hit_color);
+    plot(frame, hit.point, DOT_RADIUS, hit_color);
 }
 
 /// The right half, on black from the back to the front: the outlines where the slice cuts the
-/// spheres; the shadow and mirror rays; the screen; the sampled rays and their hits; the light
-/// and the eye.
+/// spheres; the shadow and mirror rays; the sampled rays; the screen, the light and the eye.
 fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     for row in frame.chunks_mut(WIDTH) {
         row[VIEW..].fill(BACKGROUND);
@@ -465,19 +431,25 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     let Axes { view, right, up } = camera.axes(); // the slice holds V and right; up is its normal
     let eye = camera.position;
     for (shape, material) in &scene.objects {
-        let Some((center, radius)) = shape.cut(eye, up) else {
+        // A sphere's outline: the circle where the slice cuts it, around C - hN with radius
+        // sqrt(r² - h²), where h = (C - E).N is its centre's height above the slice.
+        let Shape::Sphere { center, radius } = *shape else {
             continue;
         };
-        // Straight pieces a chord bulging by at most half a map pixel from the circle: for a
-        // circle of R map pixels in n pieces, R (1 - cos(π / n)) ≈ π²R / 2n² <= 1/2 for n >= π√R.
-        let pieces = (PI * (radius * MAP_SCALE).sqrt()).ceil();
-        let around = |i: f64| {
-            let angle = TAU * i / pieces;
-            center + (right * angle.cos() + view * angle.sin()) * radius
+        let height = (center - eye).dot(up);
+        if height.abs() >= radius {
+            continue;
+        }
+        let circle = (radius * radius - height * height).sqrt();
+        // Pieces that bulge at most half a map pixel from the circle: for a circle R map pixels
+        // wide in n pieces, R(1 - cos(π / n)) ≈ π²R / 2n² <= 1/2 for n >= π√R.
+        let pieces = (PI * (circle * MAP_SCALE).sqrt()).ceil();
+        let around = |i: usize| {
+            let angle = TAU * i as f64 / pieces;
+            center - up * height + (right * angle.cos() + view * angle.sin()) * circle
         };
         for i in 0..pieces as usize {
-            let i = i as f64;
-            draw_line(frame, around(i), around(i + 1.0), to_rgb(material.color));
+            draw_line(frame, around(i), around(i + 1), to_rgb(material.color));
         }
     }
     let primary_ray = camera.primary_rays();
@@ -486,7 +458,6 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
             .step_by(SAMPLED_EVERY)
             .map(|x| primary_ray(x as f64 + 0.5, MIDDLE_ROW))
     };
-    // Behind the sampled rays: the shadow ray of each hit and, on a mirror, its mirror ray.
     for mut ray in sampled() {
         let Some(hit) = scene.nearest_hit(&mut ray) else {
             continue;
@@ -499,38 +470,34 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
             follow(frame, scene, mirror, MIRROR_COLOR, MIRROR_COLOR);
         }
     }
-    // On top, the sampled rays up to their hits, and the hits; the screen, the light and the eye.
     for ray in sampled() {
-        if let Some(hit) = follow(frame, scene, ray, RAY_COLOR, MISS_COLOR) {
-            plot(frame, hit.point, DOT_RADIUS, RAY_COLOR);
-        }
+        follow(frame, scene, ray, RAY_COLOR, MISS_COLOR);
     }
     let screen = eye + view * SCREEN_DISTANCE; // C: the screen's middle row
     draw_line(frame, screen - right, screen + right, CAMERA_COLOR);
     plot(frame, scene.light, MARKER_RADIUS, LIGHT_COLOR);
-    // Off the map, the eye's marker stands on the map's edge, where the map comes nearest to it.
-    let last_pixel = MAP_CORNER + vec3(1.0, 0.0, 1.0) * ((VIEW - 1) as f64 / MAP_SCALE);
+    // Off the map, the eye's marker stands where the map comes nearest to it, on its edge.
+    let on_map = |w: f64, corner: f64| w.clamp(corner, corner + (VIEW - 1) as f64 / MAP_SCALE);
     let marker = vec3(
-        eye.x.clamp(MAP_CORNER.x, last_pixel.x),
+        on_map(eye.x, MAP_CORNER.x),
         0.0,
-        eye.z.clamp(MAP_CORNER.z, last_pixel.z),
+        on_map(eye.z, MAP_CORNER.z),
     );
     plot(frame, marker, MARKER_RADIUS, CAMERA_COLOR);
 }
 
 // The program: a window whose keys move and turn the camera.
-const TITLE: &str =
-    "raytracer - W A S D R F move, arrows turn, Home goes back to the start, Escape quits";
+const TITLE: &str = "raytracer - W A S D R F move, arrows turn, Home: back to the start";
 const MOVE_SPEED: f64 = 2.0; // units a second
 const TURN_SPEED: f64 = 1.5; // radians a second
 const STEPS_PER_SECOND: usize = 60; // the keys are read 60 times a second
 
 fn main() {
-    let options = WindowOptions::default();
-    let mut window = Window::new(TITLE, WIDTH, VIEW, options).unwrap_or_else(|error| {
-        eprintln!("raytracer: cannot open the window: {error}");
-        std::process::exit(1)
-    });
+    let mut window =
+        Window::new(TITLE, WIDTH, VIEW, WindowOptions::default()).unwrap_or_else(|error| {
+            eprintln!("raytracer: cannot open the window: {error}");
+            std::process::exit(1)
+        });
     window.set_target_fps(STEPS_PER_SECOND); // it sleeps for the rest of each step
     let scene = Scene::default();
     let mut camera = Camera::default();
@@ -548,11 +515,8 @@ fn main() {
         }
         stale.retain(|&key| window.is_key_down(key));
         let held = |key| {
-            if window.is_key_down(key) && !stale.contains(&key) {
-                dt
-            } else {
-                0.0
-            }
+            let fresh = window.is_key_down(key) && !stale.contains(&key);
+            if fresh { dt } else { 0.0 }
         };
         let Axes { view, right, .. } = camera.axes();
         let forward = view * (held(Key::W) - held(Key::S));
@@ -565,8 +529,8 @@ fn main() {
         if held(Key::Home) > 0.0 {
             camera = Camera::default();
         }
-        // For the window: a frame is rendered only when the camera has moved, so that idle it
-        // takes about 9% of a core instead of all of them.
+        // For the window: a frame is rendered only when the camera moved, so that idle it takes
+        // a few percent of one core instead of all of them.
         if shown != Some(camera) {
             let start = Instant::now();
             render(&scene, &camera, &mut frame);

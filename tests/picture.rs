@@ -1,0 +1,68 @@
+//! The picture at the top of the README is the default frame: `render` of the demo scene from the
+//! start pose, both halves. When the frame changes on purpose, write the picture anew with
+//! `UPDATE_PICTURE=1 cargo test --test picture`, and look at it before committing it.
+#[allow(dead_code)]
+#[path = "../src/main.rs"]
+mod raytracer;
+
+use raytracer::*;
+use std::fs::File;
+use std::io::BufReader;
+
+const PICTURE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/default_frame.png");
+
+/// A frame of 0RGB pixels as 8-bit RGB bytes, row after row.
+fn rgb_bytes(frame: &[u32]) -> Vec<u8> {
+    let bytes = |pixel: u32| [(pixel >> 16) as u8, (pixel >> 8) as u8, pixel as u8];
+    frame.iter().flat_map(|&pixel| bytes(pixel)).collect()
+}
+
+fn write_picture(rgb: &[u8]) {
+    let file = File::create(PICTURE).expect("the picture can be written");
+    let mut encoder = png::Encoder::new(file, WIDTH as u32, VIEW as u32);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    let mut writer = encoder.write_header().expect("a PNG header");
+    writer.write_image_data(rgb).expect("the picture's pixels");
+}
+
+fn read_picture() -> Vec<u8> {
+    let file = File::open(PICTURE).expect("tests/default_frame.png is there");
+    let mut reader = png::Decoder::new(BufReader::new(file))
+        .read_info()
+        .expect("a PNG");
+    let info = reader.info();
+    assert_eq!(info.width as usize, WIDTH, "the picture's width");
+    assert_eq!(info.height as usize, VIEW, "the picture's height");
+    assert_eq!(
+        info.color_type,
+        png::ColorType::Rgb,
+        "RGB, 8 bits a channel"
+    );
+    let mut rgb = vec![
+        0;
+        reader
+            .output_buffer_size()
+            .expect("a size that fits in memory")
+    ];
+    reader.next_frame(&mut rgb).expect("the picture's pixels");
+    rgb
+}
+
+#[test]
+fn the_readme_picture_is_the_default_frame() {
+    let mut frame = vec![0; WIDTH * VIEW];
+    render(&Scene::default(), &Camera::default(), &mut frame);
+    let rendered = rgb_bytes(&frame);
+    if std::env::var_os("UPDATE_PICTURE").is_some() {
+        write_picture(&rendered);
+    }
+    let picture = read_picture();
+    let differing = (rendered.chunks(3).zip(picture.chunks(3))).filter(|(a, b)| a != b);
+    let count = differing.count();
+    assert_eq!(
+        count, 0,
+        "{count} pixels differ from tests/default_frame.png; if the change is meant, write it anew \
+         with UPDATE_PICTURE=1 cargo test --test picture"
+    );
+}

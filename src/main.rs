@@ -318,7 +318,7 @@ pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
                 let ray = primary_ray(x as f64 + 0.5, y as f64 + 0.5); // the pixel's centre
                 *pixel = to_rgb(scene.trace(ray, 0));
             }
-            row[VIEW..].fill(BACKGROUND); // the 2D slice's black, while the row is at hand
+            row[VIEW..].fill(BACKGROUND); // and the row's 2D half starts black
         }
     };
     std::thread::scope(|scope| {

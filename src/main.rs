@@ -104,7 +104,7 @@ impl Camera {
         }
     }
     /// The primary ray through the point (x, y) of the screen, in pixels from its top left: O = E,
-    /// D = p(u, v) - E, u = x / VIEW, v = 1 - y / VIEW; the corners are kept as p - E (exact D).
+    /// D = p(u, v) - E, u = x / VIEW, v = 1 - y / VIEW. The corners are kept as p - E: D is exact.
     pub fn primary_rays(&self) -> impl Fn(f64, f64) -> Ray {
         let Axes { view, right, up } = self.axes();
         let eye = self.position;
@@ -112,7 +112,7 @@ impl Camera {
         let p0 = center - right - up;
         let p1 = center + right - up;
         let p2 = center - right + up;
-        // For speed (3% here): u(p1 - p0) as x times (p1 - p0) / VIEW, the same as VIEW is 2^9.
+        // For speed (3% here): u(p1 - p0) as x times (p1 - p0) / VIEW, the same D as VIEW is 2^9.
         let across = (p1 - p0) * (1.0 / VIEW as f64);
         let upward = p2 - p0;
         move |x, y| {
@@ -154,7 +154,7 @@ impl Shape {
             Shape::Sphere { center, radius } => {
                 let c = center - ray.origin;
                 let t = c.dot(ray.direction);
-                let p2 = c.dot(c) - t * t; // = q.q, as q is at right angles to D: 8% faster here
+                let p2 = c.dot(c) - t * t; // for speed (8% here): q.q, as q is at right angles to D
                 if p2 >= radius * radius {
                     return None;
                 }
@@ -217,7 +217,7 @@ struct Hit<'a> {
 }
 
 impl Hit<'_> {
-    /// A ray leaving the hit, lifted along N past the point's rounding error (which grows with it).
+    /// A ray leaving the hit, lifted along N past the point's rounding error, which grows with |p|.
     fn outgoing(&self, direction: Vec3, t: f64) -> Ray {
         let lift = self.normal * (SELF_HIT * (1.0 + self.point.length()));
         Ray::new(self.point + lift, direction, t)
@@ -346,12 +346,12 @@ const DOT_RADIUS: i32 = 1; // a hit's dot is 3 x 3 map pixels: 1 either side of 
 const MARKER_RADIUS: i32 = 3; // the light and the eye are 7 x 7
 pub const BACKGROUND: u32 = 0x000000; // black
 pub const CAMERA_COLOR: u32 = 0xff00ff; // magenta: the eye and the screen's middle row
-pub const RAY_COLOR: u32 = 0xffff00; // yellow: a sampled ray up to its hit, and the hit
+pub const RAY_COLOR: u32 = 0xffff00; // yellow: a sampled ray up to its hit, a dot there
 pub const MISS_COLOR: u32 = 0x909000; // olive: a sampled ray that hits nothing, to the map's edge
 pub const LIGHT_COLOR: u32 = 0xff8000; // orange: the light
 pub const SHADOW_COLOR: u32 = 0x983800; // rust: a shadow ray that reaches the light
-pub const BLOCKED_COLOR: u32 = 0x7838c0; // violet: a shadow ray up to what blocks it, and that
-pub const MIRROR_COLOR: u32 = 0x008c8c; // teal: a mirror ray up to its hit and the hit, or the edge
+pub const BLOCKED_COLOR: u32 = 0x7838c0; // violet: a shadow ray up to what blocks it, a dot there
+pub const MIRROR_COLOR: u32 = 0x008c8c; // teal: a mirror ray to its hit, a dot there, or to the edge
 
 /// Colours the map pixels up to `radius` pixels either side of a world point, where on the map.
 fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
@@ -415,13 +415,10 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
             let angle = TAU * i as f64 / pieces;
             center - up * height + (right * angle.cos() + view * angle.sin()) * circle
         };
+        let color = to_rgb(material.color);
         for i in 0..pieces as usize {
             let chord = around(i + 1) - around(i);
-            draw_ray(
-                frame,
-                &Ray::new(around(i), chord, chord.length()),
-                to_rgb(material.color),
-            );
+            draw_ray(frame, &Ray::new(around(i), chord, chord.length()), color);
         }
     }
     let primary_ray = camera.primary_rays();
@@ -449,12 +446,8 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     draw_ray(frame, &Ray::new(row_start, right, 2.0), CAMERA_COLOR); // to C + right
     plot(frame, scene.light, MARKER_RADIUS, LIGHT_COLOR);
     // Off the map, the eye's marker stands where the map comes nearest to it, on its edge.
-    let nearest = |w: f64, corner: f64| w.clamp(corner, corner + (VIEW - 1) as f64 / MAP_SCALE);
-    let marker = vec3(
-        nearest(eye.x, MAP_CORNER.x),
-        0.0,
-        nearest(eye.z, MAP_CORNER.z),
-    );
+    let clamp = |w: f64, corner: f64| w.clamp(corner, corner + (VIEW - 1) as f64 / MAP_SCALE);
+    let marker = vec3(clamp(eye.x, MAP_CORNER.x), 0.0, clamp(eye.z, MAP_CORNER.z));
     plot(frame, marker, MARKER_RADIUS, CAMERA_COLOR);
 }
 
@@ -495,7 +488,7 @@ fn main() {
         camera.yaw += TURN_SPEED * (held(Key::Left) - held(Key::Right));
         let pitch = camera.pitch + TURN_SPEED * (held(Key::Up) - held(Key::Down));
         camera.pitch = pitch.clamp(-FRAC_PI_2, FRAC_PI_2); // straight up at most, never over
-        if held(Key::Home) > 0.0 {
+        if fresh(Key::Home) {
             camera = Camera::default();
         }
         // For the window: rendered only when the camera moved, so idle it takes a few % of a core.

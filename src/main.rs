@@ -7,7 +7,7 @@ pub const VIEW: usize = 512; // each half of the window is VIEW x VIEW pixels
 pub const WIDTH: usize = 2 * VIEW; // a row of the frame: the 3D view, then the 2D slice
 pub const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
 pub const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
-const ODD_SQUARE: f64 = 0.25; // the share of the light the checkerboard's odd squares reflect
+const ODD_SQUARE: f64 = 0.25; // odd squares are this bright beside the even ones
 const SCREEN_DISTANCE: f64 = 1.0; // the slide's d: a screen 2 wide at distance 1 sees 90 degrees
 const SELF_HIT: f64 = 1e-6; // a ray leaving a surface starts this far off it, times 1 + |point|
 
@@ -104,7 +104,7 @@ impl Camera {
         }
     }
     /// The primary ray through the point (x, y) of the screen, in pixels from its top left: O = E,
-    /// D = p(u, v) - E, u = x / VIEW, v = 1 - y / VIEW. The corners are kept as p - E: D is exact.
+    /// D = p(u, v) - E, u = x / VIEW, v = 1 - y / VIEW; corners as p - E lose nothing to E's size.
     pub fn primary_rays(&self) -> impl Fn(f64, f64) -> Ray {
         let Axes { view, right, up } = self.axes();
         let eye = self.position;
@@ -150,11 +150,12 @@ impl Shape {
                 ahead(-(ray.origin.dot(normal) + offset) / slant)
             }
             // The slide's test: c = C - O, t = c.D, q = c - tD, p² = q.q; hits at t -/+
-            // sqrt(r² - p²), the far one from inside. Touching (p² = r²) misses: so does radius 0.
+            // sqrt(r² - p²), the far one from inside. Touching (p² = r²) misses, unlike the slide's
+            // p² > r², so that a radius-0 sphere is never hit (its normal would be 0 / 0).
             Shape::Sphere { center, radius } => {
                 let c = center - ray.origin;
                 let t = c.dot(ray.direction);
-                let p2 = c.dot(c) - t * t; // for speed (8% here): q.q, as q is at right angles to D
+                let p2 = c.dot(c) - t * t; // for speed (8% here): c.c - t² = q.q, as q ⊥ D
                 if p2 >= radius * radius {
                     return None;
                 }
@@ -295,7 +296,7 @@ impl Scene {
 /// (no 2) and with floor for (int): truncation would merge the squares either side of 0.
 fn odd_square(point: Vec3) -> bool {
     // For speed, floor is truncation, one lower where that rounded up: f64::floor is a software
-    // routine on the baseline x86-64 target (5% slower here). The sum wraps 10^19 units out.
+    // routine on the baseline x86-64 target (5% slower here). Sums wrap 10^19 units out.
     let floor = |w: f64| {
         let truncated = w as i64;
         truncated.wrapping_sub(i64::from(truncated as f64 > w))
@@ -340,7 +341,7 @@ pub fn to_rgb(color: Vec3) -> u32 {
 // in every pose (through the eye, holding V and right), so the sampled rays lie in it when pitched.
 pub const MAP_CORNER: Vec3 = vec3(-6.4, 0.0, -9.4); // top left x and z: 12.8 units around the demo
 pub const MAP_SCALE: f64 = 40.0; // map pixels per world unit
-const MIDDLE_ROW: f64 = VIEW as f64 / 2.0; // the screen's middle row (v = 0.5), from its top
+const MIDDLE_ROW: f64 = VIEW as f64 / 2.0; // v = 0.5, exactly y = 0: between two pixel rows
 const SAMPLED_EVERY: usize = 10; // the assignment's "every 10th ray"
 const DOT_RADIUS: i32 = 1; // a hit's dot is 3 x 3 map pixels: 1 either side of its point
 const MARKER_RADIUS: i32 = 3; // the light and the eye are 7 x 7
@@ -351,7 +352,7 @@ pub const MISS_COLOR: u32 = 0x909000; // olive: a sampled ray that hits nothing,
 pub const LIGHT_COLOR: u32 = 0xff8000; // orange: the light
 pub const SHADOW_COLOR: u32 = 0x983800; // rust: a shadow ray that reaches the light
 pub const BLOCKED_COLOR: u32 = 0x7838c0; // violet: a shadow ray up to what blocks it, a dot there
-pub const MIRROR_COLOR: u32 = 0x008c8c; // teal: a mirror ray to its hit, a dot there, or to the edge
+pub const MIRROR_COLOR: u32 = 0x008c8c; // teal: a mirror ray to its hit, a dot there, or the edge
 
 /// Colours the map pixels up to `radius` pixels either side of a world point, where on the map.
 fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
@@ -409,8 +410,8 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
             continue;
         }
         let circle = (radius * radius - height * height).sqrt();
-        // n pieces of a circle R map pixels wide bulge R(1 - cos(π/n)) ≈ π²R/2n² ≤ 1/2 for n ≥ π√R.
-        let pieces = (PI * (circle * MAP_SCALE).sqrt()).ceil();
+        // n pieces of a circle of radius R pixels bulge R(1 - cos(π/n)) ≈ π²R/2n² ≤ 1/2 if n ≥ π√R.
+        let pieces = (PI * (circle * MAP_SCALE).sqrt()).ceil().max(3.0); // 3 close a tiny one
         let around = |i: usize| {
             let angle = TAU * i as f64 / pieces;
             center - up * height + (right * angle.cos() + view * angle.sin()) * circle

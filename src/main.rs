@@ -57,7 +57,6 @@ impl ops::Mul<f64> for Vec3 {
 }
 
 // The ray: p(t) = O + tD with D normalized and 0 < t < ray.t, the distance it reaches so far.
-#[derive(Clone, Copy)]
 pub struct Ray {
     pub origin: Vec3,
     pub direction: Vec3,
@@ -105,6 +104,7 @@ impl Camera {
     }
     /// The primary ray through the point (x, y) of the screen, in pixels from its top left: O = E,
     /// D = p(u, v) - E, u = x / VIEW, v = 1 - y / VIEW; corners as p - E lose nothing to E's size.
+    /// It returns a function of (x, y): as on the slide, the corners are found once, not per pixel.
     pub fn primary_rays(&self) -> impl Fn(f64, f64) -> Ray {
         let Axes { view, right, up } = self.axes();
         let eye = self.position;
@@ -112,7 +112,7 @@ impl Camera {
         let p0 = center - right - up;
         let p1 = center + right - up;
         let p2 = center - right + up;
-        // For speed (3% here): u(p1 - p0) as x times (p1 - p0) / VIEW, the same D as VIEW is 2^9.
+        // For speed (3%): u(p1 - p0) as x((p1 - p0) / VIEW), one division a frame, not a pixel.
         let across = (p1 - p0) * (1.0 / VIEW as f64);
         let upward = p2 - p0;
         move |x, y| {
@@ -299,7 +299,11 @@ fn odd_square(point: Vec3) -> bool {
     // routine on the baseline x86-64 target (5% slower here). Sums wrap 10^19 units out.
     let floor = |w: f64| {
         let truncated = w as i64;
-        truncated.wrapping_sub(i64::from(truncated as f64 > w))
+        if truncated as f64 > w {
+            truncated.wrapping_sub(1)
+        } else {
+            truncated
+        }
     };
     floor(point.x).wrapping_add(floor(point.z)) & 1 == 1
 }
@@ -319,7 +323,6 @@ pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
                 let ray = primary_ray(x as f64 + 0.5, y as f64 + 0.5); // the pixel's centre
                 *pixel = to_rgb(scene.trace(ray, 0));
             }
-            row[VIEW..].fill(BACKGROUND); // and the row's 2D half starts black
         }
     };
     std::thread::scope(|scope| {
@@ -395,9 +398,12 @@ fn follow(frame: &mut [u32], scene: &Scene, mut ray: Ray, hit_color: u32, miss_c
     plot(frame, hit.point, DOT_RADIUS, hit_color);
 }
 
-/// The right half over render's black, back to front: the outlines where the slice cuts the
-/// spheres; the shadow and mirror rays; the sampled rays; the screen, the light and the eye.
+/// The right half, back to front: black; the outlines where the slice cuts the spheres; the
+/// shadow and mirror rays; the sampled rays; the screen, the light and the eye.
 fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
+    for row in frame.chunks_mut(WIDTH) {
+        row[VIEW..].fill(BACKGROUND);
+    }
     let Axes { view, right, up } = camera.axes(); // the slice holds V and right; up is its normal
     let eye = camera.position;
     for (shape, material) in &scene.objects {

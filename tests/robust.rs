@@ -428,15 +428,15 @@ fn far_away_a_ray_leaving_a_plane_does_not_hit_it_again() {
             light: vec3(0.0, 0.0, 0.0),
             sky,
         };
-        let ray = Ray::new(vec3(0.0, 0.0, 0.0), on_plane, f64::INFINITY);
-        let mirrored = mirror_scene.trace(ray, 0);
+        let ray = || Ray::new(vec3(0.0, 0.0, 0.0), on_plane, f64::INFINITY);
+        let mirrored = mirror_scene.trace(ray(), 0);
         // A white matte surface straight below the light: fully lit, N.L = 1.
         let lit_scene = Scene {
             objects: vec![(plane, white(0.0))],
             light: on_plane + normal * far,
             sky,
         };
-        let lit = lit_scene.trace(ray, 0);
+        let lit = lit_scene.trace(ray(), 0);
         if mirrored.x != 0.5 || (lit.x - 1.0).abs() > 1e-3 {
             failures.push((case, far, mirrored.x, lit.x));
         }

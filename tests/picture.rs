@@ -34,11 +34,8 @@ fn read_picture() -> Vec<u8> {
     let info = reader.info();
     assert_eq!(info.width as usize, WIDTH, "the picture's width");
     assert_eq!(info.height as usize, VIEW, "the picture's height");
-    assert_eq!(
-        info.color_type,
-        png::ColorType::Rgb,
-        "RGB, 8 bits a channel"
-    );
+    assert_eq!(info.color_type, png::ColorType::Rgb, "RGB");
+    assert_eq!(info.bit_depth, png::BitDepth::Eight, "8 bits a channel");
     let mut rgb = vec![
         0;
         reader

@@ -175,7 +175,7 @@ fn a_sphere_between_floor_and_light_casts_a_shadow() {
         yaw: 0.0,
     };
     let frame = frame_of(&scene, &camera);
-    // Two floor points of the same parity, both in view past the sphere, one hidden from the light.
+    // Two floor points of the same parity in view, the eye seeing both, one hidden from the light.
     let shaded = vec3(0.5, -1.0, -4.2);
     let lit = vec3(2.5, -1.0, -4.2);
     assert!(segment_hits_sphere(shaded, light, center, 1.0));
@@ -270,10 +270,10 @@ fn a_mirror_sphere_reflects_the_checkered_floor_and_the_sky() {
             let on_floor = point + direction * ((-1.0 - point.y) / direction.y);
             let near_edge = |w: f64| (w - w.round()).abs() < 0.05;
             if near_edge(on_floor.x) || near_edge(on_floor.z) {
-                continue;
+                continue; // too near a square's edge to say which square the pixel shows
             }
-            if segment_hits_sphere(on_floor, light, center, 1.0) || on_floor.length() > 20.0 {
-                continue;
+            if segment_hits_sphere(on_floor, light, center, 1.0) {
+                continue; // in the ball's shadow: dark either way
             }
             let green = rgb(&frame, (x, y))[1];
             assert_eq!(green < 100, odd_square(on_floor), "pixel {x}, {y}: {green}");
@@ -324,6 +324,22 @@ fn map_pixel(frame: &[u32], x: f64, z: f64) -> u32 {
     frame[row * WIDTH + VIEW + column]
 }
 
+/// The map pixels within `pixels` map pixels of a world point's x and z (those on the map).
+fn map_near(frame: &[u32], point: Vec3, pixels: i32) -> Vec<u32> {
+    let mut found = Vec::new();
+    for dx in -pixels..=pixels {
+        for dz in -pixels..=pixels {
+            let x = point.x + dx as f64 / MAP_SCALE;
+            let z = point.z + dz as f64 / MAP_SCALE;
+            let on_map = |w: f64, low: f64| (low..low + VIEW as f64 / MAP_SCALE).contains(&w);
+            if on_map(x, MAP_CORNER.x) && on_map(z, MAP_CORNER.z) {
+                found.push(map_pixel(frame, x, z));
+            }
+        }
+    }
+    found
+}
+
 #[test]
 fn the_slice_shows_the_camera_a_sphere_outline_and_a_sampled_ray() {
     let center = vec3(2.0, 0.0, -5.0);
@@ -338,13 +354,14 @@ fn the_slice_shows_the_camera_a_sphere_outline_and_a_sampled_ray() {
     for angle in [1.2f64, 1.6, 2.0] {
         let x = center.x + angle.cos();
         let z = center.z - angle.sin();
-        let near = [-0.02, 0.0, 0.02].map(|dz| map_pixel(&frame, x, z + dz));
+        let near = map_near(&frame, vec3(x, 0.0, z), 1);
         assert!(near.contains(&0xff0000), "outline at {x}, {z}: {near:x?}");
     }
     // The middle row's first ray leaves along about (-1, 0, -1) and hits nothing.
     let background = map_pixel(&frame, -4.0, -3.0);
     for t in [2.0, 4.0, 6.0] {
-        let on_ray = (-1..=1).any(|dz| map_pixel(&frame, -t, -t + dz as f64 * 0.03) != background);
+        let near = map_near(&frame, vec3(-t, 0.0, -t), 1);
+        let on_ray = near.iter().any(|&pixel| pixel != background);
         assert!(on_ray, "ray missing at {t}");
     }
     assert_ne!(map_pixel(&frame, -3.0, -3.0), background);
@@ -438,10 +455,7 @@ fn a_sphere_cut_by_the_eyes_plane_shows_the_hits_on_its_outline() {
             continue; // misses, or only grazes, the circle
         }
         let hit = d * (t_center - (cut * cut - p2).sqrt());
-        let around = [-0.025, 0.0, 0.025];
-        let dot = around.iter().any(|&dx| {
-            (around.iter()).any(|&dz| map_pixel(&frame, hit.x + dx, hit.z + dz) == RAY_COLOR)
-        });
+        let dot = map_near(&frame, hit, 1).contains(&RAY_COLOR);
         assert!(dot, "no hit marked at {hit:?} for column {x}");
         marked += 1;
     }
@@ -479,22 +493,6 @@ fn odd_cameras_render_valid_frames() {
     let frame = frame_of(&scene, &down);
     // Straight down from y = 0 the middle of the view is the floor at (0, -1, 0): square 0 + 0, even.
     assert!(rgb(&frame, (256, 256))[1] > 128);
-}
-
-/// The map pixels within `pixels` map pixels of a world point's x and z (those on the map).
-fn map_near(frame: &[u32], point: Vec3, pixels: i32) -> Vec<u32> {
-    let mut found = Vec::new();
-    for dx in -pixels..=pixels {
-        for dz in -pixels..=pixels {
-            let x = point.x + dx as f64 / MAP_SCALE;
-            let z = point.z + dz as f64 / MAP_SCALE;
-            let on_map = |w: f64, low: f64| (low..low + VIEW as f64 / MAP_SCALE).contains(&w);
-            if on_map(x, MAP_CORNER.x) && on_map(z, MAP_CORNER.z) {
-                found.push(map_pixel(frame, x, z));
-            }
-        }
-    }
-    found
 }
 
 /// Where a ray O + tD first meets a sphere, by the quadratic |O + tD - C|² = r², if in front.
@@ -611,7 +609,7 @@ fn from_far_off_the_map_the_sampled_rays_cross_it_up_to_their_hits() {
         let mut misses = 0;
         for direction in sampled_directions(&camera) {
             let d = direction.normalize();
-            // Where the ray crosses the line z = z: z = 3 is just inside the map's bottom edge.
+            // Where the ray is at depth z: z = 3 is just inside the map's bottom edge.
             let at_z = |z: f64| camera.position + d * ((z - distance) / d.z);
             if at_z(3.0).x.abs() > 6.0 {
                 continue; // it passes beside the map
@@ -725,10 +723,6 @@ fn the_sampled_rays_are_on_top_along_their_whole_length() {
         let mut checked = 0;
         for direction in sampled_directions(&camera) {
             let d = direction.normalize();
-            assert_eq!(
-                d.y, 0.0,
-                "a level camera's middle row never meets the floor"
-            );
             let (color, end) = match first_sphere_hit(&scene, position, d) {
                 Some((_, distance)) => (RAY_COLOR, distance - 0.05),
                 None => (MISS_COLOR, 30.0),
@@ -795,13 +789,33 @@ fn no_two_colours_on_the_map_are_within_64_of_each_other() {
             }
         }
     }
-    // Every kind of thing the legend names is there: black, the four outlines, the eye and the
-    // screen, the sampled rays, their misses, the light, shadow rays reaching it and blocked.
-    assert!(
-        colors.len() >= 11,
-        "{} colours: {colors:06x?}",
-        colors.len()
-    );
+    // Every kind of thing the legend names is there: black, the eye and the screen, the sampled
+    // rays, their misses, the light, shadow rays reaching it and blocked, mirror rays, and the
+    // four balls' outlines, each in its own colour as 0RGB bytes.
+    let named = [
+        BACKGROUND,
+        CAMERA_COLOR,
+        RAY_COLOR,
+        MISS_COLOR,
+        LIGHT_COLOR,
+        SHADOW_COLOR,
+        BLOCKED_COLOR,
+        MIRROR_COLOR,
+    ];
+    let outlines = scene
+        .objects
+        .iter()
+        .filter_map(|(shape, material)| match shape {
+            Shape::Sphere { .. } => {
+                let color = material.color;
+                Some(byte(color.x) << 16 | byte(color.y) << 8 | byte(color.z))
+            }
+            Shape::Plane { .. } => None,
+        });
+    let expected: Vec<u32> = named.into_iter().chain(outlines).collect();
+    for color in &expected {
+        assert!(colors.contains(color), "{color:06x} missing: {colors:06x?}");
+    }
     for (i, &a) in colors.iter().enumerate() {
         for &b in &colors[..i] {
             assert!(distance(a, b) >= 64.0, "{a:06x} and {b:06x}");
@@ -840,7 +854,7 @@ fn off_the_map_the_eye_has_a_marker_on_the_edge_nearest_to_it() {
 
 #[test]
 fn a_huge_spheres_outline_stays_within_a_pixel_of_its_circle() {
-    // A sphere 35 units wide cut through its centre by the level slice, the eye looking away
+    // A sphere of radius 35 cut through its centre by the level slice, the eye looking away
     // from it so that no ray is drawn over its outline, and the light far off the map.
     let center = vec3(0.0, 0.0, -40.0);
     let radius = 35.0;
@@ -859,7 +873,7 @@ fn a_huge_spheres_outline_stays_within_a_pixel_of_its_circle() {
     let frame = frame_of(&scene, &camera);
     let mut checked = 0;
     for i in 0..20_000 {
-        let angle = std::f64::consts::TAU * i as f64 / 20_000.0; // every 0.01 units of the circle
+        let angle = std::f64::consts::TAU * i as f64 / 20_000.0; // about every 0.011 units of the circle
         let on_circle = center + vec3(angle.cos(), 0.0, angle.sin()) * radius;
         if inside_map(on_circle, 0.1) {
             assert!(

@@ -6,12 +6,14 @@ mod raytracer;
 use raytracer::*;
 use std::time::Instant;
 
+const FRAMES: usize = 100;
+
 fn main() {
     // Cargo passes `--bench`; there is nothing to choose.
     let scene = Scene::default();
     let camera = Camera::default();
     let mut frame = vec![0; WIDTH * VIEW];
-    let mut milliseconds: Vec<f64> = (0..100)
+    let mut milliseconds: Vec<f64> = (0..FRAMES)
         .map(|_| {
             let start = Instant::now();
             render(&scene, &camera, &mut frame);
@@ -19,10 +21,10 @@ fn main() {
         })
         .collect();
     milliseconds.sort_by(f64::total_cmp);
-    let median = milliseconds[50];
+    let median = milliseconds[FRAMES / 2];
     let min = milliseconds[0];
     let fps = 1e3 / median;
     println!(
-        "100 frames of the default view: median {median:.2} ms, min {min:.2} ms, {fps:.0} fps"
+        "{FRAMES} frames of the default view: median {median:.2} ms, min {min:.2} ms, {fps:.0} fps"
     );
 }

@@ -247,7 +247,8 @@ impl Scene {
             Shape::Plane { normal, .. } => normal,
         };
         let facing = outward.dot(ray.direction) < 0.0; // two-sided: N faces the ray
-        let normal = if facing { outward } else { outward * -1.0 };
+        let side = if facing { 1.0 } else { -1.0 };
+        let normal = outward * side;
         Some(Hit {
             point,
             normal,

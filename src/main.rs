@@ -67,7 +67,7 @@ impl Ray {
     pub fn new(origin: Vec3, direction: Vec3, t: f64) -> Ray {
         Ray {
             origin,
-            direction: direction.normalize(), // of any length, it is normalized here
+            direction: direction.normalize(), // of any length but 0, it is normalized here
             t,
         }
     }
@@ -257,11 +257,11 @@ impl Scene {
         })
     }
 
-    /// The shadow ray from a hit to the light; none where the surface faces away (N.L <= 0).
+    /// The shadow ray from a hit to the light; none where N.L <= 0, the light behind it or on it.
     fn shadow_ray(&self, hit: &Hit) -> Option<Ray> {
         let to_light = self.light - hit.point;
-        let ray = hit.outgoing(to_light, to_light.length());
-        (ray.direction.dot(hit.normal) > 0.0).then_some(ray)
+        let faces_light = to_light.dot(hit.normal) > 0.0;
+        faces_light.then(|| hit.outgoing(to_light, to_light.length()))
     }
 
     /// The colour a ray brings back, `depth` mirror bounces deep; the sky if it hits nothing.

@@ -284,13 +284,13 @@ impl Scene {
         if reflectivity <= 0.0 || depth >= MAX_DEPTH {
             return color;
         }
-        let mirror = hit.mirror_ray(ray.direction);
-        color * (1.0 - reflectivity) + self.mirrored(mirror, depth) * reflectivity
+        color * (1.0 - reflectivity) + self.reflection(&hit, ray.direction, depth) * reflectivity
     }
 
-    #[inline(never)] // for speed: `trace` recurses only through here, so LLVM can inline `trace`
-    fn mirrored(&self, mirror: Ray, depth: u32) -> Vec3 {
-        self.trace(mirror, depth + 1)
+    /// What a mirror shows: the colour its mirror ray brings back, one bounce deeper.
+    #[inline(never)] // for speed: `trace` recurses through here, as LLVM inlines no self-caller
+    fn reflection(&self, hit: &Hit, direction: Vec3, depth: u32) -> Vec3 {
+        self.trace(hit.mirror_ray(direction), depth + 1)
     }
 }
 

@@ -16,17 +16,25 @@ impl Random {
     fn new(seed: u64) -> Random {
         Random { state: seed }
     }
-    /// A number from 0 up to 1.
+    /// A number from 0 up to 1, never 1 itself.
     fn next(&mut self) -> f64 {
+        // xorshift64*'s published shifts and multiplier (Vigna, 2016).
         self.state ^= self.state >> 12;
         self.state ^= self.state << 25;
         self.state ^= self.state >> 27;
         let bits = self.state.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11; // the top 53 bits
         bits as f64 / (1u64 << 53) as f64
     }
+    /// A whole number from 0 to n - 1, each as likely.
+    fn below(&mut self, n: usize) -> usize {
+        // next() < 1, so next() * n < n: its floor is one of 0 to n - 1.
+        (self.next() * n as f64).floor() as usize
+    }
+    /// A number from `low` up to `high`.
     fn between(&mut self, low: f64, high: f64) -> f64 {
         low + (high - low) * self.next()
     }
+    /// A point in the cube from -size to size on each axis.
     fn point(&mut self, size: f64) -> Vec3 {
         vec3(
             self.between(-size, size),
@@ -36,9 +44,16 @@ impl Random {
     }
 }
 
+/// The share of random materials that are perfect mirrors (reflectivity 1), which can bounce a ray
+/// on to the maximum depth; the rest get a reflectivity anywhere from 0 to 1.
+const PERFECT_MIRROR_SHARE: f64 = 0.3;
+/// The share of random materials that are checkered.
+const CHECKERED_SHARE: f64 = 0.5;
+
+/// A random colour and finish.
 fn material(random: &mut Random) -> Material {
     let color = vec3(random.next(), random.next(), random.next());
-    let reflectivity = if random.next() < 0.3 {
+    let reflectivity = if random.next() < PERFECT_MIRROR_SHARE {
         1.0
     } else {
         random.next()
@@ -46,25 +61,39 @@ fn material(random: &mut Random) -> Material {
     Material {
         color,
         reflectivity,
-        checkered: random.next() < 0.5,
+        checkered: random.next() < CHECKERED_SHARE,
     }
 }
 
+/// A random scene holds from 0 to this many objects.
+const MOST_OBJECTS: usize = 4;
+/// The share of spheres among a random scene's objects; the rest are planes.
+const SPHERE_SHARE: f64 = 0.7;
+/// The radii a random sphere gets: a point, a speck, a ball the demo's size, a big ball, and one so
+/// big that every camera near the origin is inside it.
+const RADII: [f64; 5] = [0.0, 0.01, 1.0, 3.0, 1e4];
+/// Random spheres' centres are within this of the origin on each axis, and the light within
+/// `LIGHT_SPREAD`: among the cameras (`NEAR`), so cameras and the light fall inside spheres and on
+/// either side of planes.
+const OBJECT_SPREAD: f64 = 5.0;
+const LIGHT_SPREAD: f64 = 6.0;
+/// Random planes pass at most this far from the origin.
+const PLANE_SPREAD: f64 = 3.0;
+
 fn random_scene(random: &mut Random) -> Scene {
-    let count = (random.next() * 5.0) as usize;
+    let count = random.below(MOST_OBJECTS + 1);
     let objects = (0..count)
         .map(|_| {
-            let shape = if random.next() < 0.7 {
-                let radius = [0.0, 0.01, 1.0, 3.0, 1e4][(random.next() * 5.0) as usize];
+            let shape = if random.next() < SPHERE_SHARE {
                 Shape::Sphere {
-                    center: random.point(5.0),
-                    radius,
+                    center: random.point(OBJECT_SPREAD),
+                    radius: RADII[random.below(RADII.len())],
                 }
             } else {
-                let normal = random.point(1.0).normalize();
+                let normal = random.point(1.0).normalize(); // a direction at random
                 Shape::Plane {
                     normal,
-                    offset: random.between(-3.0, 3.0),
+                    offset: random.between(-PLANE_SPREAD, PLANE_SPREAD),
                 }
             };
             (shape, material(random))
@@ -72,21 +101,31 @@ fn random_scene(random: &mut Random) -> Scene {
         .collect();
     Scene {
         objects,
-        light: random.point(6.0),
-        sky: vec3(0.5, 0.7, 1.0),
+        light: random.point(LIGHT_SPREAD),
+        sky: vec3(0.5, 0.7, 1.0), // light blue
     }
 }
 
+/// Most cameras are within `NEAR` of the origin on each axis, among the objects; a `FAR_SHARE`
+/// of them are within `FAR`, most of them thousands of units away, where rounding errors grow.
+const NEAR: f64 = 6.0;
+const FAR: f64 = 1e4;
+const FAR_SHARE: f64 = 0.1;
+/// Yaws go up to this many whole turns either way, to check that angles past 2 pi work.
+const MOST_TURNS: f64 = 3.0;
+
 fn random_camera(random: &mut Random) -> Camera {
-    let far = if random.next() < 0.1 { 1e4 } else { 6.0 };
-    let pitch = match (random.next() * 4.0) as usize {
+    let spread = if random.next() < FAR_SHARE { FAR } else { NEAR };
+    // A look-at camera's right, V × up, is 0 looking straight up or down: a quarter of the poses
+    // look straight up and a quarter straight down, to check this one's is not; half in between.
+    let pitch = match random.below(4) {
         0 => FRAC_PI_2,
         1 => -FRAC_PI_2,
         _ => random.between(-FRAC_PI_2, FRAC_PI_2),
     };
     Camera {
-        position: random.point(far),
-        yaw: random.between(-3.0 * TAU, 3.0 * TAU),
+        position: random.point(spread),
+        yaw: random.between(-MOST_TURNS * TAU, MOST_TURNS * TAU),
         pitch,
     }
 }
@@ -96,14 +135,20 @@ fn primary_ray(camera: &Camera, x: usize, y: usize) -> Ray {
     camera.primary_rays()(x as f64 + 0.5, y as f64 + 0.5)
 }
 
+/// How far a channel may round past the bound it is checked against, far more than it can: N.L of
+/// two unit vectors, or a mix of two colours, comes out a few parts in 10^16 off at most.
+const ROUNDING_SLACK: f64 = 1e-9;
+
+/// A colour fit to show: every channel a number (not NaN) from 0 to 1, give or take rounding.
 fn valid(color: Vec3) -> bool {
     [color.x, color.y, color.z]
         .iter()
-        .all(|c| (0.0..=1.0 + 1e-9).contains(c))
+        .all(|c| !c.is_nan() && (0.0..=1.0 + ROUNDING_SLACK).contains(c))
 }
 
 /// Renders the frame twice and compares: into a fresh buffer, and over one that holds the demo.
-fn assert_valid_frame(scene: &Scene, camera: &Camera, case: &str) {
+/// (That it renders at all checks that no pixel panics.)
+fn assert_same_frame_in_any_buffer(scene: &Scene, camera: &Camera, case: &str) {
     let mut fresh = vec![0; WIDTH * VIEW];
     render(scene, camera, &mut fresh);
     // The same frame again, over one that holds another picture: every pixel is drawn anew.
@@ -146,79 +191,145 @@ fn random_case(seed: u64, nth: u64) -> (Scene, Camera) {
     (scene, random_camera(&mut random))
 }
 
+/// Camera poses tried, one a seed; every `SCENE_EVERY`th in a random scene (400 scenes) and the
+/// rest in the demo, and every `FRAME_EVERY`th also rendered whole (20 frames: a frame traces
+/// 262,144 primary rays, not 72).
+const POSES: u64 = 1200;
+const SCENE_EVERY: u64 = 3;
+const FRAME_EVERY: u64 = 60;
+
 #[test]
 fn a_thousand_camera_poses_and_hundreds_of_random_scenes() {
-    for seed in 1..=1200u64 {
-        let (scene, camera) = random_case(seed, 3);
+    for seed in 1..=POSES {
+        let (scene, camera) = random_case(seed, SCENE_EVERY);
         let case = format!("seed {seed}: {camera:?} in {scene:?}");
         assert_valid_rays(&scene, &camera, &case);
-        if seed % 60 == 0 {
-            assert_valid_frame(&scene, &camera, &case);
+        if seed.is_multiple_of(FRAME_EVERY) {
+            assert_same_frame_in_any_buffer(&scene, &camera, &case);
         }
     }
 }
 
+/// What the test's own roots say `intersect` must return.
+#[derive(Debug)]
+enum Expected {
+    /// A hit at this t: the nearest root in front of the ray, so a point on the surface.
+    Hit(f64),
+    Miss,
+    /// A root or the discriminant within rounding of 0 (a ray that starts on the surface, grazes
+    /// the sphere or runs along the plane): a hit and a miss are both right there.
+    TooCloseToCall,
+}
+
+/// A value this close to 0 is taken to be 0 give or take rounding, which is far smaller here: the
+/// discriminants' terms are under 10^3 and round by under 10^-12, and the test's roots and
+/// `intersect`'s differ by at most 3 × 10^-14 in all the cases.
+const NEAR_ZERO: f64 = 1e-9;
+
+fn near_zero(value: f64) -> bool {
+    value.abs() < NEAR_ZERO
+}
+
+/// The sphere |p - C|² = r² along p(t) = O + tD, D a unit vector: t² + 2bt + c = 0 with
+/// b = (O - C).D and c = |O - C|² - r², so t = -b ± √(b² - c). The ray hits at the near root if
+/// that is in front of it, else at the far one (it starts inside), and misses if there is no root
+/// or both are behind it.
+fn expected_sphere_hit(ray: &Ray, center: Vec3, radius: f64) -> Expected {
+    let oc = ray.origin - center;
+    let b = oc.dot(ray.direction);
+    let discriminant = b * b - (oc.dot(oc) - radius * radius);
+    if near_zero(discriminant) {
+        return Expected::TooCloseToCall;
+    }
+    if discriminant < 0.0 {
+        return Expected::Miss;
+    }
+    let near_root = -b - discriminant.sqrt();
+    let far_root = -b + discriminant.sqrt();
+    if near_zero(near_root) || near_zero(far_root) {
+        Expected::TooCloseToCall
+    } else if near_root > 0.0 {
+        Expected::Hit(near_root)
+    } else if far_root > 0.0 {
+        Expected::Hit(far_root)
+    } else {
+        Expected::Miss
+    }
+}
+
+/// The plane p.N + d = 0 along p(t) = O + tD: (O.N + d) + t(D.N) = 0, one root, a hit if it is in
+/// front of the ray.
+fn expected_plane_hit(ray: &Ray, normal: Vec3, offset: f64) -> Expected {
+    let slant = ray.direction.dot(normal);
+    if near_zero(slant) {
+        return Expected::TooCloseToCall;
+    }
+    let root = -(ray.origin.dot(normal) + offset) / slant;
+    if near_zero(root) {
+        Expected::TooCloseToCall
+    } else if root > 0.0 {
+        Expected::Hit(root)
+    } else {
+        Expected::Miss
+    }
+}
+
+/// How far the t that `intersect` returns may be from the test's root, as a share of the root (of
+/// 1 for roots under 1), as rounding errors are shares of the values rounded. `intersect` may find
+/// the roots in another order and so round differently: today the two differ by at most
+/// 3 × 10^-14 here. And the far root cannot pass for the near one: they are
+/// 2√(b² - c) > 2√NEAR_ZERO > 6 × 10^-5 apart, and the tolerance is under 3 × 10^-5 there, as a
+/// sphere's roots here are under 30 (|O - C| < 26 and r < 4).
+const ROOT_TOLERANCE: f64 = 1e-6;
+
+/// Asserts that `intersect` found what the test's roots say: a hit in front of the ray at the
+/// expected t, or no hit.
+fn assert_hit(hit: Option<f64>, expected: Expected, case: &str) {
+    match expected {
+        Expected::Hit(root) => assert!(
+            hit.is_some_and(|t| t > 0.0 && (t - root).abs() < ROOT_TOLERANCE * root.max(1.0)),
+            "{case}: hit at {hit:?}, expected at t = {root}"
+        ),
+        Expected::Miss => assert_eq!(hit, None, "{case}"),
+        Expected::TooCloseToCall => {}
+    }
+}
+
+/// Random rays, spheres and planes tried in the hit test.
+const HIT_CASES: usize = 20_000;
+
 #[test]
-fn hits_are_in_front_of_the_ray_and_on_the_surface() {
+fn a_hit_is_the_nearest_root_in_front_of_the_ray() {
+    // Each hit must be the nearest point of the surface in front of the ray, the smallest root
+    // t > 0 of the surface's equation, which the test finds by its own formulas.
+    // Rays from within 10 of the origin on each axis, in any direction, among spheres (centres
+    // within 5, radii up to 4) and planes (up to 5 from the origin): rays start inside and outside
+    // spheres and on either side of planes, which lie ahead of them or behind. With this seed, 555
+    // rays hit their sphere (385 at the near root, 170 from inside at the far one), 9,946 hit their
+    // plane, and no case is too close to call (counted once by printing; not asserted, as the
+    // test's own geometry, not `intersect`, decides these counts).
     let mut random = Random::new(7);
-    let mut sphere_hits = 0;
-    let mut plane_hits = 0;
-    for case in 0..20_000 {
+    for case in 0..HIT_CASES {
         let ray = Ray::new(random.point(10.0), random.point(1.0), f64::INFINITY);
         let center = random.point(5.0);
         let radius = random.between(0.0, 4.0);
-        let sphere = Shape::Sphere { center, radius };
-        let normal = random.point(1.0).normalize();
+        let normal = random.point(1.0).normalize(); // a direction at random
         let offset = random.between(-5.0, 5.0);
+        let sphere = Shape::Sphere { center, radius };
+        let expected = expected_sphere_hit(&ray, center, radius);
+        assert_hit(
+            sphere.intersect(&ray),
+            expected,
+            &format!("case {case}, sphere"),
+        );
         let plane = Shape::Plane { normal, offset };
-        // The test's own roots: |O + tD - C|² = r² gives t = -b ± √(b² - c), b = (O - C).D,
-        // c = |O - C|² - r², a hit ahead when the larger root is; (O + tD).N + d = 0 gives one t.
-        let oc = ray.origin - center;
-        let b = oc.dot(ray.direction);
-        let discriminant = b * b - (oc.dot(oc) - radius * radius);
-        let far_root = -b + discriminant.max(0.0).sqrt();
-        let plane_root = -(ray.origin.dot(normal) + offset) / ray.direction.dot(normal);
-        // Where a root is within rounding of 0, or the ray only grazes the sphere, either answer is
-        // right: such cases (none with this seed) are left out of the comparison.
-        let near_zero = |value: f64| value.abs() < 1e-9;
-        if !near_zero(discriminant) && !near_zero(far_root) {
-            let hit = sphere.intersect(&ray);
-            assert_eq!(
-                hit.is_some(),
-                discriminant > 0.0 && far_root > 0.0,
-                "case {case}"
-            );
-            if let Some(t) = hit {
-                let off_surface = ((at(&ray, t) - center).length() - radius).abs();
-                assert!(
-                    t > 0.0 && off_surface < 1e-6,
-                    "case {case}: sphere hit at t = {t}"
-                );
-                sphere_hits += 1;
-            }
-        }
-        if !near_zero(plane_root) {
-            let hit = plane.intersect(&ray);
-            assert_eq!(hit.is_some(), plane_root > 0.0, "case {case}");
-            if let Some(t) = hit {
-                let off_surface = (at(&ray, t).dot(normal) + offset).abs();
-                assert!(
-                    t > 0.0 && off_surface < 1e-6,
-                    "case {case}: plane hit at t = {t}"
-                );
-                plane_hits += 1;
-            }
-        }
+        let expected = expected_plane_hit(&ray, normal, offset);
+        assert_hit(
+            plane.intersect(&ray),
+            expected,
+            &format!("case {case}, plane"),
+        );
     }
-    assert!(
-        sphere_hits > 100 && plane_hits > 100,
-        "{sphere_hits} {plane_hits}"
-    );
-}
-
-/// The point p(t) = O + tD.
-fn at(ray: &Ray, t: f64) -> Vec3 {
-    ray.origin + ray.direction * t
 }
 
 fn white(reflectivity: f64) -> Material {
@@ -269,14 +380,14 @@ fn odd_scenes_render_valid_frames() {
             light,
             sky,
         };
-        assert_valid_frame(&scene, &Camera::default(), case);
+        assert_same_frame_in_any_buffer(&scene, &Camera::default(), case);
         assert_valid_rays(&scene, &Camera::default(), case);
     }
     // Rays aimed straight at the centres of radius-0 spheres pass them: p² rounds to about 0,
     // either side of it, and such a sphere has no surface to hit (its normal would be (p - C) / 0).
     let mut random = Random::new(5);
     for _ in 0..1000 {
-        let center = random.point(5.0);
+        let center = random.point(5.0); // a thousand centres within 5 of the origin on each axis
         let point = Scene {
             objects: vec![ball(center, 0.0, white(0.0))],
             light,
@@ -304,6 +415,7 @@ fn odd_scenes_render_valid_frames() {
     let ray = Ray::new(vec3(0.0, 0.0, 0.0), vec3(1.0, -1e-19, 1.0), f64::INFINITY);
     let color = checkered_floor.trace(ray, 0);
     assert!(valid(color) && color != sky, "{color:?}");
+    // An empty scene renders the sky in every pixel of the 3D view.
     let empty = Scene {
         objects: vec![],
         light,
@@ -313,15 +425,14 @@ fn odd_scenes_render_valid_frames() {
     render(&empty, &Camera::default(), &mut frame);
     let byte = |channel: f64| (channel * 255.0) as u32; // 0RGB, each channel 0 to 255
     let sky_pixel = byte(sky.x) << 16 | byte(sky.y) << 8 | byte(sky.z);
-    assert!((0..VIEW).all(|y| {
-        frame[y * WIDTH..y * WIDTH + VIEW]
-            .iter()
-            .all(|&p| p == sky_pixel)
-    }));
+    let view_pixels = |y: usize| &frame[y * WIDTH..y * WIDTH + VIEW]; // the 3D view's part of row y
+    assert!((0..VIEW).all(|y| view_pixels(y).iter().all(|&p| p == sky_pixel)));
 }
 
 #[test]
 fn a_light_inside_a_sphere_leaves_everything_else_in_shadow() {
+    // The light at the centre of a white matte ball: the floor and the ball's outside get only
+    // the ambient share, AMBIENT × 1 on a white surface.
     let lamp = ball(vec3(0.0, 2.0, -3.0), 0.5, white(0.0));
     let scene = Scene {
         objects: vec![floor(), lamp],
@@ -329,11 +440,12 @@ fn a_light_inside_a_sphere_leaves_everything_else_in_shadow() {
         sky: vec3(0.0, 0.0, 0.0),
     };
     let camera = Camera::default();
-    for y in (0..VIEW).step_by(8) {
-        for x in (0..VIEW).step_by(8) {
+    let every = 8; // every 8th pixel across and down: 64 x 64 rays
+    for y in (0..VIEW).step_by(every) {
+        for x in (0..VIEW).step_by(every) {
             let color = scene.trace(primary_ray(&camera, x, y), 0);
             assert!(
-                color.x <= AMBIENT + 1e-9,
+                color.x <= AMBIENT + ROUNDING_SLACK,
                 "pixel {x}, {y} is lit: {color:?}"
             );
         }
@@ -367,6 +479,7 @@ fn facing_mirrors_stop_at_the_maximum_depth() {
         light: vec3(0.0, 0.0, -3.0),
         sky: vec3(0.5, 0.7, 1.0),
     };
+    // Steeply down: it meets the floor first, then the two in turn, 0.2 further along -z each time.
     let ray = Ray::new(vec3(0.0, 0.0, 0.0), vec3(0.0, -1.0, -0.1), f64::INFINITY);
     let color = scene.trace(ray, 0);
     assert!(valid(color), "{color:?}");
@@ -425,7 +538,7 @@ fn cameras_on_surfaces_and_far_away_render_valid_frames() {
             yaw,
             pitch,
         };
-        assert_valid_frame(&scene, &camera, case);
+        assert_same_frame_in_any_buffer(&scene, &camera, case);
         assert_valid_rays(&scene, &camera, case);
     }
 }
@@ -436,6 +549,13 @@ fn perpendicular(n: Vec3, random: &mut Random) -> Vec3 {
     (any - n * any.dot(n)).normalize()
 }
 
+/// Grazing rays tried in the far-away test.
+const GRAZING_CASES: usize = 20_000;
+/// How far from 1 a fully lit white surface may come out: rounding moves the hit point along the
+/// plane, which tilts L off N and takes up to 1.3 × 10^-8 off the colour here. A shadow ray that
+/// hit the plane it leaves would give AMBIENT, 0.1.
+const FULLY_LIT_TOLERANCE: f64 = 1e-3;
+
 #[test]
 fn far_away_a_ray_leaving_a_plane_does_not_hit_it_again() {
     // A plane p.N + d = 0 tilted at random, the origin d from it on N's side, and a ray from the
@@ -445,10 +565,10 @@ fn far_away_a_ray_leaving_a_plane_does_not_hit_it_again() {
     let mut random = Random::new(11);
     let sky = vec3(1.0, 1.0, 1.0);
     let mut failures = Vec::new();
-    for case in 0..20_000 {
-        let normal = random.point(1.0).normalize();
-        let offset = random.between(1.0, 5.0);
-        let far = 10f64.powf(random.between(4.0, 11.0));
+    for case in 0..GRAZING_CASES {
+        let normal = random.point(1.0).normalize(); // a direction at random
+        let offset = random.between(1.0, 5.0); // d: the origin 1 to 5 units from the plane
+        let far = 10f64.powf(random.between(4.0, 11.0)); // 10^4 to 10^11
         let on_plane = normal * -offset + perpendicular(normal, &mut random) * far;
         let plane = Shape::Plane { normal, offset };
         // A black half-mirror: what it shows is half the colour its mirror ray brings back.
@@ -471,13 +591,15 @@ fn far_away_a_ray_leaving_a_plane_does_not_hit_it_again() {
             sky,
         };
         let lit = lit_scene.trace(ray(), 0);
-        if mirrored.x != 0.5 || (lit.x - 1.0).abs() > 1e-3 {
+        let mirror_sees_sky = mirrored.x == 0.5 * sky.x; // the half-mirror's half of the sky
+        let fully_lit = (lit.x - 1.0).abs() < FULLY_LIT_TOLERANCE;
+        if !mirror_sees_sky || !fully_lit {
             failures.push((case, far, mirrored.x, lit.x));
         }
     }
     assert!(
         failures.is_empty(),
-        "{} of 20000: {:?}",
+        "{} of {GRAZING_CASES}: {:?}",
         failures.len(),
         &failures[..failures.len().min(5)]
     );

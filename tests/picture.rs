@@ -1,5 +1,6 @@
 //! The picture at the top of the README is the default frame: `render` of the demo scene from the
-//! start pose, both halves. When the frame changes on purpose, write the picture anew with
+//! start pose, both halves. This test compares the program's output with a stored earlier output:
+//! it keeps the picture true, while the other tests check the rendering itself. When the frame changes on purpose, write the picture anew with
 //! `UPDATE_PICTURE=1 cargo test --test picture`, and look at it before committing it.
 #[allow(dead_code)]
 #[path = "../src/main.rs"]
@@ -32,6 +33,8 @@ fn read_picture() -> Vec<u8> {
         .read_info()
         .expect("a PNG");
     let info = reader.info();
+    // Not a check of the program: a stored picture of another shape or format would be compared
+    // out of step, pixel against the wrong pixel.
     assert_eq!(info.width as usize, WIDTH, "the picture's width");
     assert_eq!(info.height as usize, VIEW, "the picture's height");
     assert_eq!(info.color_type, png::ColorType::Rgb, "RGB");

@@ -374,14 +374,18 @@ fn map_near(frame: &[u32], point: Vec3, pixels: i32) -> Vec<u32> {
 }
 
 #[test]
-fn the_slice_shows_the_camera_a_sphere_outline_and_a_sampled_ray() {
+fn the_slice_shows_the_camera_the_light_a_sphere_outline_and_the_sampled_rays() {
     let center = vec3(2.0, 0.0, -5.0);
-    let scene = scene_of(
-        vec![sphere(center, 1.0, matte(PURE_RED))],
-        vec3(0.0, 5.0, 2.0),
-    );
+    let light = vec3(0.0, 5.0, 2.0);
+    let scene = scene_of(vec![sphere(center, 1.0, matte(PURE_RED))], light);
     let frame = frame_of(&scene, &Camera::default());
     assert_eq!(map_pixel(&frame, 0.0, 0.0), CAMERA_COLOR, "the camera dot");
+    // The light's marker, a square 7 map pixels wide, is all there around the light's x and z.
+    let light_marker = map_near(&frame, light, 3);
+    assert!(
+        light_marker.iter().all(|&pixel| pixel == LIGHT_COLOR),
+        "the light"
+    );
     // The screen's middle row, from x = -1 to 1 at z = -1 (d = 1 ahead), and not past its ends.
     for x in [-0.5, 0.5] {
         assert_eq!(
@@ -408,11 +412,21 @@ fn the_slice_shows_the_camera_a_sphere_outline_and_a_sampled_ray() {
             "outline at {x}, {z}: {near:x?}"
         );
     }
+    // The sampled rays that hit the sphere stop at its front: none is drawn on to its centre.
+    let around_the_center = map_near(&frame, center, 2);
+    assert!(
+        !around_the_center.contains(&RAY_COLOR),
+        "a ray past its hit"
+    );
+    // The sphere is matte: no mirror ray.
+    assert!(
+        !map_of(&frame).contains(&MIRROR_COLOR),
+        "a matte sphere's mirror ray"
+    );
     // The middle row's first ray leaves along about (-1, 0, -1) and hits nothing.
     for t in [2.0, 4.0, 6.0] {
         let near = map_near(&frame, vec3(-t, 0.0, -t), 1);
-        let on_ray = near.iter().any(|&pixel| pixel != BACKGROUND);
-        assert!(on_ray, "ray missing at {t}");
+        assert!(near.contains(&MISS_COLOR), "the missing ray at {t}");
     }
     assert_ne!(map_pixel(&frame, -3.0, -3.0), BACKGROUND);
     // 0.4 units (16 map pixels) left of the ray, nothing.
@@ -461,11 +475,11 @@ fn with_a_level_camera_the_slice_rays_stay_in_the_eyes_plane() {
         (position, yaw)
     });
     let chosen = [
-        (vec3(0.0, 0.0, 0.0), 0.0),
-        (vec3(0.7, 0.3, -1.0), 0.4),
-        (vec3(-1.0, 2.5, 1.0), -2.0),
-        (vec3(0.0, -3.0, 0.0), 1.0),
-        (vec3(-1.9, 0.18, 0.07), 0.03),
+        (vec3(0.0, 0.0, 0.0), 0.0),     // the start pose
+        (vec3(0.7, 0.3, -1.0), 0.4),    // among the balls, turned a little left
+        (vec3(-1.0, 2.5, 1.0), -2.0),   // high up, turned right and past a quarter turn
+        (vec3(0.0, -3.0, 0.0), 1.0),    // below the floor
+        (vec3(-1.9, 0.18, 0.07), 0.03), // where rounding once sent the rays into the floor
     ];
     for (position, yaw) in chosen.into_iter().chain(spread) {
         let camera = Camera {
@@ -756,11 +770,10 @@ fn the_sampled_rays_are_on_top_along_their_whole_length() {
         let mut checked = 0;
         for direction in sampled_directions(&camera) {
             let d = direction.normalize();
-            // The ray's colour, and where to stop: 0.05 units (2 map pixels) before the hit's dot.
-            let (color, end) = match first_sphere_hit(&scene, position, d) {
-                Some((_, distance)) => (RAY_COLOR, distance - 0.05),
-                None => (MISS_COLOR, f64::INFINITY),
-            };
+            let hit = first_sphere_hit(&scene, position, d);
+            let color = if hit.is_some() { RAY_COLOR } else { MISS_COLOR };
+            // Where to stop: 0.05 units (2 map pixels) before the hit's dot, or at the map's edge.
+            let end = hit.map_or(f64::INFINITY, |(_, distance)| distance - 0.05);
             // From past the screen's middle row (1 to √2 ahead) to the hit or the map's edge, every
             // half map pixel.
             let mut t = 1.5;
@@ -848,8 +861,12 @@ fn no_two_colours_on_the_map_are_within_64_of_each_other() {
     for color in &expected {
         assert!(colors.contains(color), "{color:06x} missing: {colors:06x?}");
     }
-    for (i, &a) in colors.iter().enumerate() {
-        for &b in &colors[..i] {
+    // Every pair apart: the named colours (two names of one colour would show as one on the map),
+    // and any other colour the map shows.
+    let others = colors.iter().filter(|color| !expected.contains(color));
+    let all: Vec<u32> = expected.iter().chain(others).copied().collect();
+    for (i, &a) in all.iter().enumerate() {
+        for &b in &all[..i] {
             assert!(rgb_distance(a, b) >= 64.0, "{a:06x} and {b:06x}");
         }
     }
@@ -859,28 +876,40 @@ fn no_two_colours_on_the_map_are_within_64_of_each_other() {
 fn off_the_map_the_eye_has_a_marker_on_the_edge_nearest_to_it() {
     let scene = scene_of(vec![], vec3(0.0, 5.0, -3.0));
     let last = (VIEW - 1) as f64;
-    // The marker is a square 7 map pixels wide: centred on the edge pixel, 4 of its rows or columns
-    // are on the map, so the pixel 3 further in from an edge is in it too.
-    let inward = |w: f64| if w < HALF_VIEW { w + 3.0 } else { w - 3.0 };
-    // The eye behind the map, beside it, and past its corner: the nearest map pixel to it.
-    for (position, column, row) in [
-        (vec3(0.0, 0.0, 25.0), (0.0 - MAP_CORNER.x) * MAP_SCALE, last),
+    // The eye behind the map, beside it, and past its corner: the map pixel nearest to it, on the
+    // edge, and the step from there into the map, in map pixels right and down.
+    let cases = [
+        (
+            vec3(0.0, 0.0, 25.0),
+            (0.0 - MAP_CORNER.x) * MAP_SCALE,
+            last,
+            (0.0, -1.0),
+        ),
         (
             vec3(20.0, 0.0, -4.0),
             last,
             (-4.0 - MAP_CORNER.z) * MAP_SCALE,
+            (-1.0, 0.0),
         ),
-        (vec3(-30.0, 0.0, 40.0), 0.0, last),
-    ] {
+        (vec3(-30.0, 0.0, 40.0), 0.0, last, (1.0, -1.0)),
+    ];
+    for (position, column, row, (step_x, step_y)) in cases {
         let camera = Camera {
             position,
             ..Camera::default()
         };
         let frame = frame_of(&scene, &camera);
-        for (x, y) in [(column, row), (inward(column), inward(row))] {
-            let marker = frame[y as usize * WIDTH + VIEW + x as usize];
-            assert_eq!(marker, CAMERA_COLOR, "{position:?}: map pixel {x}, {y}");
+        let map_at = |steps: f64| {
+            let x = column + step_x * steps;
+            let y = row + step_y * steps;
+            frame[y as usize * WIDTH + VIEW + x as usize]
+        };
+        // The marker is a square 7 map pixels wide centred on that pixel: it reaches 3 pixels into
+        // the map from the edge, and not 4.
+        for steps in [0.0, 3.0] {
+            assert_eq!(map_at(steps), CAMERA_COLOR, "{position:?}: {steps} in");
         }
+        assert_ne!(map_at(4.0), CAMERA_COLOR, "{position:?}: 4 in");
     }
     // On the map, no marker on the edges: the eye is where it is.
     let frame = frame_of(&scene, &Camera::default());
@@ -905,9 +934,11 @@ fn a_huge_spheres_outline_stays_within_a_pixel_of_its_circle() {
     };
     let frame = frame_of(&scene, &camera);
     // About every 0.011 units along the circle, of which 1,153 points are on the map.
-    for i in 0..20_000 {
-        let angle = std::f64::consts::TAU * i as f64 / 20_000.0;
+    let points = 20_000;
+    for i in 0..points {
+        let angle = std::f64::consts::TAU * i as f64 / points as f64;
         let on_circle = center + vec3(angle.cos(), 0.0, angle.sin()) * radius;
+        // 0.1 units (4 map pixels) inside the edges, so that all of map_near's pixels are on it.
         if inside_map(on_circle, 0.1) {
             assert!(
                 map_near(&frame, on_circle, 1).contains(&pixel_of(PURE_RED)),

@@ -358,6 +358,7 @@ fn floor() -> (Shape, Material) {
 fn odd_scenes_render_valid_frames() {
     let sky = vec3(0.5, 0.7, 1.0);
     let light = vec3(0.0, 5.0, 0.0);
+    let huge = 1e6; // a radius a million times the demo's balls'
     let cases = [
         ("no objects", vec![]),
         ("only a floor", vec![floor()]),
@@ -367,7 +368,8 @@ fn odd_scenes_render_valid_frames() {
         ),
         (
             "huge radius",
-            vec![ball(vec3(0.0, 0.0, -1e6 - 5.0), 1e6, white(0.0))],
+            // Its near side 5 ahead of the eye, nearly flat across the view.
+            vec![ball(vec3(0.0, 0.0, -huge - 5.0), huge, white(0.0))],
         ),
         (
             "coincident",

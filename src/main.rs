@@ -249,10 +249,9 @@ impl Scene {
         };
         let facing = outward.dot(ray.direction) < 0.0; // two-sided: N faces the ray
         let side = if facing { 1.0 } else { -1.0 };
-        let normal = outward * side;
         Some(Hit {
             point,
-            normal,
+            normal: outward * side,
             material,
         })
     }
@@ -393,7 +392,8 @@ fn draw_ray(frame: &mut [u32], ray: &Ray, color: u32) {
 /// Draws a ray up to its nearest hit and a dot there in `hit_color`, or all of it in `miss_color`.
 fn follow(frame: &mut [u32], scene: &Scene, mut ray: Ray, hit_color: u32, miss_color: u32) {
     let Some(hit) = scene.nearest_hit(&mut ray) else {
-        return draw_ray(frame, &ray, miss_color);
+        draw_ray(frame, &ray, miss_color);
+        return;
     };
     draw_ray(frame, &ray, hit_color);
     plot(frame, hit.point, DOT_RADIUS, hit_color);
@@ -453,15 +453,15 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     let row_start = eye + view * SCREEN_DISTANCE - right; // the screen's middle row: C - right
     draw_ray(frame, &Ray::new(row_start, right, 2.0), CAMERA_COLOR); // to C + right
     plot(frame, scene.light, MARKER_RADIUS, LIGHT_COLOR);
-    // Off the map, the eye's marker stands where the map comes nearest to it, on its edge.
-    let clamp = |w: f64, corner: f64| w.clamp(corner, corner + (VIEW - 1) as f64 / MAP_SCALE);
-    let marker = vec3(clamp(eye.x, MAP_CORNER.x), 0.0, clamp(eye.z, MAP_CORNER.z));
+    // Off the map, the eye's marker stands on the map's edge nearest to it: x, z snapped onto it.
+    let snap = |w: f64, corner: f64| w.clamp(corner, corner + (VIEW - 1) as f64 / MAP_SCALE);
+    let marker = vec3(snap(eye.x, MAP_CORNER.x), 0.0, snap(eye.z, MAP_CORNER.z));
     plot(frame, marker, MARKER_RADIUS, CAMERA_COLOR);
 }
 
 // The program: a window whose keys move and turn the camera.
 const TITLE: &str = "raytracer - W A S D R F move, arrows turn, Home: back to the start, Esc quits";
-const MOVE_SPEED: f64 = 2.0; // units a second
+const MOVE_SPEED: f64 = 2.0; // units a second along each key's direction
 const TURN_SPEED: f64 = 1.5; // radians a second
 const STEPS_PER_SECOND: usize = 60; // the keys are read 60 times a second
 

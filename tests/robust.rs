@@ -613,7 +613,8 @@ fn far_away_a_ray_leaving_a_plane_does_not_hit_it_again() {
         let mirror_sees_sky = mirrored.x == 0.5 * sky.x; // the half-mirror's half of the sky
         let fully_lit = (lit.x - 1.0).abs() < FULLY_LIT_TOLERANCE;
         if !mirror_sees_sky || !fully_lit {
-            failures.push((case, far, mirrored.x, lit.x));
+            let seen = format!("mirror {}, lit {}", mirrored.x, lit.x);
+            failures.push(format!("case {case}, {far:.1e} out: {seen}"));
         }
     }
     assert!(

@@ -281,7 +281,7 @@ impl Scene {
         let color = hit.material.color * brightness;
         let reflectivity = hit.material.reflectivity;
         if reflectivity <= 0.0 || depth >= MAX_DEPTH {
-            return color;
+            return color; // at MAX_DEPTH a mirror too: no mirror ray, only its own colour
         }
         color * (1.0 - reflectivity) + self.reflection(&hit, ray.direction, depth) * reflectivity
     }
@@ -314,7 +314,7 @@ fn odd_square(point: Vec3) -> bool {
 pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     let primary_ray = camera.primary_rays();
     let rows = Mutex::new(frame.chunks_mut(WIDTH).enumerate());
-    // Each thread takes the next row, so all finish together (on 2 cores 5.8 ms, a band each 8.6).
+    // For speed, each thread takes the next row: all end together (2 cores: 5.8 ms; bands: 8.6).
     let next_row = || rows.lock().unwrap().next();
     let threads = std::thread::available_parallelism().map_or(1, usize::from);
     let work = || {
@@ -329,7 +329,7 @@ pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
         for _ in 1..threads {
             scope.spawn(work);
         }
-        work(); // this thread works too, not only waits (3%)
+        work(); // for speed: this thread works too, not only waits (3%)
     });
     draw_slice(scene, camera, frame);
 }

@@ -413,7 +413,7 @@ fn the_slice_shows_the_camera_the_light_a_sphere_outline_and_the_sampled_rays() 
         );
     }
     // The sampled rays that hit the sphere stop at its front: none is drawn on to its centre. Within
-    // 2 map pixels of it, as the nearest ray to it (column 360's) passes 1.6 map pixels away.
+    // 2 map pixels of it, as the nearest ray to it (column 360's) passes 1.5 map pixels away.
     let around_the_center = map_near(&frame, center, 2);
     assert!(
         !around_the_center.contains(&RAY_COLOR),

@@ -7,6 +7,7 @@ use raytracer::*;
 use std::time::Instant;
 
 const FRAMES: usize = 100;
+const MS_PER_SECOND: f64 = 1e3;
 
 fn main() {
     // Cargo passes `--bench`; there is nothing to choose.
@@ -17,13 +18,13 @@ fn main() {
         .map(|_| {
             let start = Instant::now();
             render(&scene, &camera, &mut frame);
-            start.elapsed().as_secs_f64() * 1e3
+            start.elapsed().as_secs_f64() * MS_PER_SECOND
         })
         .collect();
     milliseconds.sort_by(f64::total_cmp);
     let median = milliseconds[FRAMES / 2];
     let min = milliseconds[0];
-    let fps = 1e3 / median;
+    let fps = MS_PER_SECOND / median;
     println!(
         "{FRAMES} frames of the default view: median {median:.2} ms, min {min:.2} ms, {fps:.0} fps"
     );

@@ -80,7 +80,8 @@ fn pixel_of(color: Vec3) -> u32 {
     red << 16 | green << 8 | blue
 }
 
-/// The slide's diffuse shading of a lit point: ambient + (1 - ambient) N.L, none from behind.
+/// Diffuse shading with an ambient share, as the README gives it: ambient + (1 - ambient) N.L,
+/// where N.L <= 0 (the light behind the surface) adds nothing.
 fn lit_share(point: Vec3, normal: Vec3, light: Vec3) -> f64 {
     let n_dot_l = normal.dot((light - point).normalize());
     AMBIENT + (1.0 - AMBIENT) * n_dot_l.max(0.0)
@@ -412,8 +413,8 @@ fn the_slice_shows_the_camera_the_light_a_sphere_outline_and_the_sampled_rays() 
             "outline at {x}, {z}: {near:x?}"
         );
     }
-    // The sampled rays that hit the sphere stop at its front: none is drawn on to its centre. Within
-    // 2 map pixels of it, as the nearest ray to it (column 360's) passes 1.5 map pixels away.
+    // The sampled rays that hit the sphere stop at its front: none is drawn on to its centre.
+    // Within 2 map pixels of it, as the nearest ray to it (column 360's) passes 1.5 pixels away.
     let around_the_center = map_near(&frame, center, 2);
     assert!(
         !around_the_center.contains(&RAY_COLOR),

@@ -222,8 +222,8 @@ enum Expected {
 }
 
 /// A value this close to 0 is taken to be 0 give or take rounding, which is far smaller here: the
-/// discriminants' terms are under 10^3 and round by under 10^-12, and the test's roots and
-/// `intersect`'s differ by at most 3 × 10^-14 in all the cases.
+/// discriminants' terms are under 10^3 (see `RAY_SPREAD`) and round by under 10^-12, and the
+/// test's roots and `intersect`'s differ by at most 3 × 10^-14 in all the cases.
 const NEAR_ZERO: f64 = 1e-9;
 
 fn near_zero(value: f64) -> bool {
@@ -279,7 +279,7 @@ fn expected_plane_hit(ray: &Ray, normal: Vec3, offset: f64) -> Expected {
 /// the roots in another order and so round differently: today the two differ by at most
 /// 3 × 10^-14 here. And the far root cannot pass for the near one: they are
 /// 2√(b² - c) > 2√NEAR_ZERO > 6 × 10^-5 apart, and the tolerance is under 3 × 10^-5 there, as a
-/// sphere's roots here are under 30 (|O - C| < 26 and r < 4).
+/// sphere's roots here are under 30 (|O - C| < 26 and r < 4: see `RAY_SPREAD`).
 const ROOT_TOLERANCE: f64 = 1e-6;
 
 /// Asserts that `intersect` found what the test's roots say: a hit in front of the ray at the
@@ -297,24 +297,33 @@ fn assert_hit(hit: Option<f64>, expected: Expected, case: &str) {
 
 /// Random rays, spheres and planes tried in the hit test.
 const HIT_CASES: usize = 20_000;
+/// Its rays start within `RAY_SPREAD` of the origin on each axis, its spheres' centres are within
+/// `CENTER_SPREAD` and their radii up to `MOST_RADIUS`, its planes pass up to `OFFSET_SPREAD` from
+/// the origin: so |O - C| < (10 + 5)√3 < 26 and r < 4, which `NEAR_ZERO` and `ROOT_TOLERANCE`
+/// rest on.
+const RAY_SPREAD: f64 = 10.0;
+const CENTER_SPREAD: f64 = 5.0;
+const MOST_RADIUS: f64 = 4.0;
+const OFFSET_SPREAD: f64 = 5.0;
 
 #[test]
 fn a_hit_is_the_nearest_root_in_front_of_the_ray() {
-    // Each hit must be the nearest point of the surface in front of the ray, the smallest root
-    // t > 0 of the surface's equation, which the test finds by its own formulas.
-    // Rays from within 10 of the origin on each axis, in any direction, among spheres (centres
-    // within 5, radii up to 4) and planes (up to 5 from the origin): rays start inside and outside
+    // Each hit must be the nearest point of the surface in front of the ray, the smallest positive
+    // root of the surface's equation, which the test finds by its own formulas. Rays in any
+    // direction, among spheres and planes (sizes above `HIT_CASES`): rays start inside and outside
     // spheres and on either side of planes, which lie ahead of them or behind. With this seed, 555
     // rays hit their sphere (385 at the near root, 170 from inside at the far one), 9,946 hit their
     // plane, and no case is too close to call (counted once by printing; not asserted, as the
     // test's own geometry, not `intersect`, decides these counts).
     let mut random = Random::new(7);
     for case in 0..HIT_CASES {
-        let ray = Ray::new(random.point(10.0), random.point(1.0), f64::INFINITY);
-        let center = random.point(5.0);
-        let radius = random.between(0.0, 4.0);
+        let origin = random.point(RAY_SPREAD);
+        let direction = random.point(1.0); // any direction: Ray::new normalizes it
+        let ray = Ray::new(origin, direction, f64::INFINITY);
+        let center = random.point(CENTER_SPREAD);
+        let radius = random.between(0.0, MOST_RADIUS);
         let normal = random.point(1.0).normalize(); // a direction at random
-        let offset = random.between(-5.0, 5.0);
+        let offset = random.between(-OFFSET_SPREAD, OFFSET_SPREAD);
         let sphere = Shape::Sphere { center, radius };
         let expected = expected_sphere_hit(&ray, center, radius);
         assert_hit(
@@ -498,7 +507,7 @@ fn facing_mirrors_stop_at_the_maximum_depth() {
     let point = vec3(0.0, height, -0.1 - 0.2 * last);
     let n_dot_l = normal.dot((scene.light - point).normalize());
     let brightness = AMBIENT + (1.0 - AMBIENT) * n_dot_l;
-    let shown = color.x + color.z; // the one channel of the two that is not 0
+    let shown = if ends_on_ceiling { color.z } else { color.x };
     // Each bounce starts lifted 10^-6 or so off its mirror, which moves the last point a little:
     // 2 × 10^-7 off today, where stopping a bounce or two early would be 0.06 or more off.
     let lift_slack = 1e-5;

@@ -200,6 +200,7 @@ const FRAME_EVERY: u64 = 60;
 
 #[test]
 fn a_thousand_camera_poses_and_hundreds_of_random_scenes() {
+    // (compares) Every FRAME_EVERY-th pose's frame, rendered into two buffers.
     for seed in 1..=POSES {
         let (scene, camera) = random_case(seed, SCENE_EVERY);
         let case = format!("seed {seed}: {camera:?} in {scene:?}");
@@ -365,6 +366,7 @@ fn floor() -> (Shape, Material) {
 
 #[test]
 fn odd_scenes_render_valid_frames() {
+    // (compares) Each odd scene's frame, rendered into two buffers.
     let sky = vec3(0.5, 0.7, 1.0);
     let light = vec3(0.0, 5.0, 0.0);
     let huge = 1e6; // a radius a million times the demo's balls'
@@ -547,6 +549,7 @@ fn with_no_display_it_says_so_in_one_line_and_ignores_arguments() {
 
 #[test]
 fn cameras_on_surfaces_and_far_away_render_valid_frames() {
+    // (compares) Each pose's frame, rendered into two buffers.
     let scene = Scene::default();
     let poses = [
         ("on the floor", vec3(0.0, -1.0, -1.0), 0.0, -0.5),
@@ -576,6 +579,9 @@ fn perpendicular(n: Vec3, random: &mut Random) -> Vec3 {
     let any = random.point(1.0);
     (any - n * any.dot(n)).normalize()
 }
+
+/// The first few failures that a failing test's message shows.
+const FAILURES_SHOWN: usize = 5;
 
 /// Grazing rays tried in the far-away test.
 const GRAZING_CASES: usize = 20_000;
@@ -630,6 +636,6 @@ fn far_away_a_ray_leaving_a_plane_does_not_hit_it_again() {
         failures.is_empty(),
         "{} of {GRAZING_CASES}: {:?}",
         failures.len(),
-        &failures[..failures.len().min(5)]
+        &failures[..failures.len().min(FAILURES_SHOWN)]
     );
 }

@@ -350,10 +350,10 @@ fn map_pixel(frame: &[u32], x: f64, z: f64) -> u32 {
     frame[row * WIDTH + VIEW + column]
 }
 
-/// Is a hit's dot at a world point: all 3 x 3 map pixels around it in `color`? A line through
-/// them colours only some.
-fn dot_at(frame: &[u32], point: Vec3, color: u32) -> bool {
-    map_near(frame, point, 1)
+/// Is a square drawn around a world point: all map pixels within `radius` of its pixel in `color`?
+/// A hit's dot has radius 1 (3 x 3), a marker 3 (7 x 7); a line through them colours only some.
+fn square_at(frame: &[u32], point: Vec3, radius: i32, color: u32) -> bool {
+    map_near(frame, point, radius)
         .iter()
         .all(|&pixel| pixel == color)
 }
@@ -382,11 +382,7 @@ fn the_slice_shows_the_camera_the_light_a_sphere_outline_and_the_sampled_rays() 
     let frame = frame_of(&scene, &Camera::default());
     assert_eq!(map_pixel(&frame, 0.0, 0.0), CAMERA_COLOR, "the camera dot");
     // The light's marker, a square 7 map pixels wide, is all there around the light's x and z.
-    let light_marker = map_near(&frame, light, 3);
-    assert!(
-        light_marker.iter().all(|&pixel| pixel == LIGHT_COLOR),
-        "the light"
-    );
+    assert!(square_at(&frame, light, 3, LIGHT_COLOR), "the light");
     // The screen's middle row, from x = -1 to 1 at z = -1 (d = 1 ahead), and not past its ends.
     for x in [-0.5, 0.5] {
         assert_eq!(
@@ -521,7 +517,7 @@ fn a_sphere_cut_by_the_eyes_plane_shows_the_hits_on_its_outline() {
         }
         let hit = d * (t_center - (cut * cut - p2).sqrt());
         assert!(
-            dot_at(&frame, hit, RAY_COLOR),
+            square_at(&frame, hit, 1, RAY_COLOR),
             "no hit dot at {hit:?}, column {x}"
         );
     }
@@ -643,7 +639,7 @@ fn a_pitched_slice_plane_outlines_the_spheres_it_cuts_and_no_others() {
                 continue;
             };
             assert!(
-                dot_at(&frame, hit, RAY_COLOR),
+                square_at(&frame, hit, 1, RAY_COLOR),
                 "{case}: no hit dot at {hit:?}"
             );
         }

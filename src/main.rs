@@ -1,7 +1,8 @@
 //! A Whitted-style ray tracer in one file; beside its 3D view, a top-down 2D slice of the scene.
 use minifb::{Key, Window, WindowOptions};
-use std::f64::consts::{FRAC_PI_2, PI, TAU};
-use std::{ops, sync::Mutex, time::Instant};
+use std::f64::consts::{FRAC_PI_2, TAU};
+use std::ops;
+use std::time::Instant;
 
 pub const VIEW: usize = 512; // each half of the window is VIEW x VIEW pixels
 pub const WIDTH: usize = 2 * VIEW; // a row of the frame: the 3D view, then the 2D slice
@@ -31,7 +32,8 @@ impl Vec3 {
         self.dot(self).sqrt()
     }
     pub fn normalize(self) -> Vec3 {
-        self * (1.0 / self.length())
+        let length = self.length();
+        vec3(self.x / length, self.y / length, self.z / length)
     }
 }
 
@@ -45,7 +47,14 @@ impl ops::Add for Vec3 {
 impl ops::Sub for Vec3 {
     type Output = Vec3;
     fn sub(self, other: Vec3) -> Vec3 {
-        vec3(self.x - other.x, self.y - other.y, self.z - other.z)
+        self + -other
+    }
+}
+
+impl ops::Neg for Vec3 {
+    type Output = Vec3;
+    fn neg(self) -> Vec3 {
+        vec3(-self.x, -self.y, -self.z)
     }
 }
 
@@ -85,51 +94,43 @@ pub struct Camera {
     pub pitch: f64, // radians; positive looks up
 }
 
-struct Axes {
-    view: Vec3,
-    right: Vec3,
-    up: Vec3,
-}
-
 impl Camera {
     /// V from the yaw and the pitch; right is V turned a quarter about y and level; up = right × V.
-    fn axes(&self) -> Axes {
+    fn axes(&self) -> (Vec3, Vec3, Vec3) {
         let (sin_yaw, cos_yaw) = self.yaw.sin_cos();
         let (sin_pitch, cos_pitch) = self.pitch.sin_cos();
-        Axes {
-            view: vec3(-sin_yaw * cos_pitch, sin_pitch, -cos_yaw * cos_pitch),
-            right: vec3(cos_yaw, 0.0, -sin_yaw),
-            up: vec3(sin_yaw * sin_pitch, cos_pitch, cos_yaw * sin_pitch),
-        }
+        let view = vec3(-sin_yaw * cos_pitch, sin_pitch, -cos_yaw * cos_pitch);
+        let right = vec3(cos_yaw, 0.0, -sin_yaw);
+        let up = vec3(sin_yaw * sin_pitch, cos_pitch, cos_yaw * sin_pitch);
+        (view, right, up)
     }
-    /// The primary ray through the point (x, y) of the screen, in pixels from its top left: O = E,
-    /// D = p(u, v) - E, u = x / VIEW, v = 1 - y / VIEW; corners as p - E lose nothing to E's size.
-    /// It returns a function of (x, y): as on the slide, the corners are found once, not per pixel.
+    /// Step 4: the primary ray through (x, y), in pixels from the screen's top left: O = E,
+    /// D = p(u, v) - E, u = x / VIEW, v = 1 - y / VIEW; a function of (x, y): corners found once.
     pub fn primary_rays(&self) -> impl Fn(f64, f64) -> Ray {
-        let Axes { view, right, up } = self.axes();
+        let (view, right, up) = self.axes();
         let eye = self.position;
-        let center = view * SCREEN_DISTANCE; // C - E
+        // C, p0, p1, p2 less E: D = p(u, v) - E then loses nothing to rounding (E + x - E != x).
+        let center = view * SCREEN_DISTANCE;
         let p0 = center - right - up;
         let p1 = center + right - up;
         let p2 = center - right + up;
-        // For speed (2%): u(p1 - p0) as x((p1 - p0) / VIEW), a multiplication a pixel fewer.
-        let across = (p1 - p0) * (1.0 / VIEW as f64);
-        let upward = p2 - p0;
         move |x, y| {
+            let u = x / VIEW as f64;
             let v = 1.0 - y / VIEW as f64;
-            Ray::new(eye, p0 + upward * v + across * x, f64::INFINITY)
+            let direction = p0 + (p1 - p0) * u + (p2 - p0) * v; // p(u, v) - E
+            Ray::new(eye, direction, f64::INFINITY)
         }
     }
 }
 
 // Primitives: the sphere (p - C).(p - C) = r² and the plane p.N + d = 0, each with a material.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy)]
 pub enum Shape {
     Sphere { center: Vec3, radius: f64 },
     Plane { normal: Vec3, offset: f64 }, // N normalized, d = offset
 }
 
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy)]
 pub struct Material {
     pub color: Vec3,
     pub reflectivity: f64, // 0 is matte, 1 a perfect mirror
@@ -137,7 +138,7 @@ pub struct Material {
 }
 
 impl Shape {
-    /// The distance t of the ray's first hit with 0 < t < ray.t, if any.
+    /// Step 5: the distance t of the ray's first hit with 0 < t < ray.t, if any.
     pub fn intersect(&self, ray: &Ray) -> Option<f64> {
         let ahead = |t: f64| (t > 0.0 && t < ray.t).then_some(t);
         match *self {
@@ -155,8 +156,8 @@ impl Shape {
             Shape::Sphere { center, radius } => {
                 let c = center - ray.origin;
                 let t = c.dot(ray.direction);
-                // For speed (8%): q.q = c.c - t² as q ⊥ D; rounding can make it < 0, q.q never.
-                let p2 = (c.dot(c) - t * t).max(0.0);
+                let q = c - ray.direction * t;
+                let p2 = q.dot(q);
                 if p2 >= radius * radius {
                     return None;
                 }
@@ -168,17 +169,11 @@ impl Shape {
 }
 
 // The scene: the objects, one point light and a flat sky.
-#[derive(Debug)]
 pub struct Scene {
     pub objects: Vec<(Shape, Material)>,
     pub light: Vec3,
     pub sky: Vec3,
 }
-
-const WHITE: Vec3 = vec3(0.9, 0.9, 0.9);
-const RED: Vec3 = vec3(0.9, 0.2, 0.2);
-const GREEN: Vec3 = vec3(0.2, 0.8, 0.3);
-const BLUE: Vec3 = vec3(0.2, 0.4, 0.9);
 
 impl Default for Scene {
     fn default() -> Scene {
@@ -193,14 +188,15 @@ impl Default for Scene {
         };
         let floor = Shape::Plane {
             normal: vec3(0.0, 1.0, 0.0),
-            offset: 1.0,
+            offset: 1.0, // p.N + d = y + 1 = 0: the floor is y = -1
         };
+        let white = vec3(0.9, 0.9, 0.9);
         let objects = vec![
-            (floor, material(WHITE, 0.0, true)),
-            ball(vec3(0.3, 0.0, -4.5), 1.0, WHITE, 0.85),
-            ball(vec3(-2.0, -0.2, -4.2), 0.8, RED, 0.0),
-            ball(vec3(1.9, -0.4, -3.4), 0.6, GREEN, 0.0),
-            ball(vec3(-0.9, -0.45, -2.6), 0.55, BLUE, 0.0),
+            (floor, material(white, 0.0, true)),
+            ball(vec3(0.3, 0.0, -4.5), 1.0, white, 0.85), // the mirror ball
+            ball(vec3(-2.0, -0.2, -4.2), 0.8, vec3(0.9, 0.2, 0.2), 0.0), // red
+            ball(vec3(1.9, -0.4, -3.4), 0.6, vec3(0.2, 0.8, 0.3), 0.0), // green
+            ball(vec3(-0.9, -0.45, -2.6), 0.55, vec3(0.2, 0.4, 0.9), 0.0), // blue
         ];
         Scene {
             objects,
@@ -212,13 +208,13 @@ impl Default for Scene {
 
 // Shading: colour = surface × (ambient + (1 - ambient) N.L where the shadow ray reaches the light),
 // mixed by the reflectivity with the colour the mirror ray R = D - 2(D.N)N brings back.
-struct Hit<'a> {
-    point: Vec3,            // where a ray hits
-    normal: Vec3,           // unit, on the side the ray comes from
-    material: &'a Material, // for speed: a copy of the material measured 2% slower here
+struct Hit {
+    point: Vec3,  // where a ray hits
+    normal: Vec3, // unit, on the side the ray comes from
+    material: Material,
 }
 
-impl Hit<'_> {
+impl Hit {
     /// A ray leaving the hit, lifted along N past the point's rounding error, which grows with |p|.
     fn outgoing(&self, direction: Vec3, t: f64) -> Ray {
         let lift = self.normal * (SELF_HIT * (1.0 + self.point.length()));
@@ -233,7 +229,7 @@ impl Hit<'_> {
 
 impl Scene {
     /// Step 6, the nearest intersection: each object that the ray hits before ray.t shortens it.
-    fn nearest_hit(&self, ray: &mut Ray) -> Option<Hit<'_>> {
+    fn nearest_hit(&self, ray: &mut Ray) -> Option<Hit> {
         let mut nearest = None;
         for (shape, material) in &self.objects {
             if let Some(t) = shape.intersect(ray) {
@@ -244,36 +240,34 @@ impl Scene {
         let (shape, material) = nearest?;
         let point = ray.at(ray.t);
         let outward = match *shape {
-            Shape::Sphere { center, radius } => (point - center) * (1.0 / radius),
+            Shape::Sphere { center, .. } => (point - center).normalize(),
             Shape::Plane { normal, .. } => normal,
         };
         let facing = outward.dot(ray.direction) < 0.0; // two-sided: N faces the ray
-        let side = if facing { 1.0 } else { -1.0 };
+        let normal = if facing { outward } else { -outward };
         Some(Hit {
             point,
-            normal: outward * side,
-            material,
+            normal,
+            material: *material,
         })
     }
 
     /// The shadow ray from a hit to the light; none where N.L <= 0, the light behind it or on it.
     fn shadow_ray(&self, hit: &Hit) -> Option<Ray> {
         let to_light = self.light - hit.point;
-        let faces_light = to_light.dot(hit.normal) > 0.0;
-        faces_light.then(|| hit.outgoing(to_light, to_light.length()))
+        (to_light.dot(hit.normal) > 0.0).then(|| hit.outgoing(to_light, to_light.length()))
     }
 
-    /// The colour a ray brings back, `depth` mirror bounces deep; the sky if it hits nothing.
-    #[inline(always)] // for speed: into render's loop, as a call per pixel costs (27% here)
+    /// Step 9: the colour a ray brings back, `depth` mirror bounces deep; the sky if it hits none.
     pub fn trace(&self, mut ray: Ray, depth: u32) -> Vec3 {
         let Some(hit) = self.nearest_hit(&mut ray) else {
             return self.sky;
         };
         let mut brightness = AMBIENT;
-        if let Some(mut shadow) = self.shadow_ray(&hit) {
-            if self.nearest_hit(&mut shadow).is_none() {
-                brightness += (1.0 - AMBIENT) * shadow.direction.dot(hit.normal);
-            }
+        if let Some(mut shadow) = self.shadow_ray(&hit)
+            && self.nearest_hit(&mut shadow).is_none()
+        {
+            brightness += (1.0 - AMBIENT) * shadow.direction.dot(hit.normal);
         }
         if hit.material.checkered && odd_square(hit.point) {
             brightness *= ODD_SQUARE;
@@ -283,58 +277,31 @@ impl Scene {
         if reflectivity <= 0.0 || depth >= MAX_DEPTH {
             return color; // at MAX_DEPTH a mirror too: no mirror ray, only its own colour
         }
-        color * (1.0 - reflectivity) + self.reflection(&hit, ray.direction, depth) * reflectivity
-    }
-
-    /// What a mirror shows: the colour its mirror ray brings back, one bounce deeper.
-    #[inline(never)] // for speed (27%): trace recurses via here, as LLVM inlines no self-caller
-    fn reflection(&self, hit: &Hit, direction: Vec3, depth: u32) -> Vec3 {
-        self.trace(hit.mirror_ray(direction), depth + 1)
+        color * (1.0 - reflectivity)
+            + self.trace(hit.mirror_ray(ray.direction), depth + 1) * reflectivity
     }
 }
 
-/// The slide's checkerboard F = ((int)(2 λ1) + (int)λ2) & 1 with λ1 = x, λ2 = z, for unit squares
-/// (no 2) and with floor for (int): truncation would merge the squares either side of 0.
+/// Step 8, the slide's checkerboard F = ((int)(2 λ1) + (int)λ2) & 1 with λ1 = x, λ2 = z, for unit
+/// squares (no 2) and with floor for (int): truncation would merge the squares either side of 0.
 fn odd_square(point: Vec3) -> bool {
-    // For speed, floor is truncation, one lower where that rounded up: f64::floor is a call into
-    // the C library on the baseline x86-64 target (5% slower here). Sums wrap 10^19 units out.
-    let floor = |w: f64| {
-        let truncated = w as i64;
-        if truncated as f64 > w {
-            truncated.wrapping_sub(1)
-        } else {
-            truncated
-        }
-    };
-    floor(point.x).wrapping_add(floor(point.z)) & 1 == 1
+    (point.x.floor() + point.z.floor()) as i64 & 1 == 1
 }
 
-// Rendering, the slide's step 6: for each pixel, the colour of its primary ray, on all cores.
+// Rendering, the slide's step 6: for each pixel, the colour of its primary ray.
 /// Fills a frame of WIDTH x VIEW 0RGB pixels: the 3D view, then the 2D slice.
 pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     let primary_ray = camera.primary_rays();
-    let rows = Mutex::new(frame.chunks_mut(WIDTH).enumerate());
-    // For speed, each thread takes the next row: all end together (a band each took 1.5x as long).
-    let next_row = || rows.lock().unwrap().next();
-    let threads = std::thread::available_parallelism().map_or(1, usize::from);
-    let work = || {
-        while let Some((y, row)) = next_row() {
-            for (x, pixel) in row[..VIEW].iter_mut().enumerate() {
-                let ray = primary_ray(x as f64 + 0.5, y as f64 + 0.5); // the pixel's centre
-                *pixel = to_rgb(scene.trace(ray, 0));
-            }
+    for y in 0..VIEW {
+        for x in 0..VIEW {
+            let ray = primary_ray(x as f64 + 0.5, y as f64 + 0.5); // the pixel's centre
+            frame[y * WIDTH + x] = to_rgb(scene.trace(ray, 0));
         }
-    };
-    std::thread::scope(|scope| {
-        for _ in 1..threads {
-            scope.spawn(work); // for speed: a thread a core (1 core: 11.7 ms; 2 cores: 6.2)
-        }
-        work(); // for speed: this thread works too, not only waits (3%)
-    });
+    }
     draw_slice(scene, camera, frame);
 }
 
-pub fn to_rgb(color: Vec3) -> u32 {
+fn to_rgb(color: Vec3) -> u32 {
     let byte = |channel: f64| (channel.min(1.0) * 255.0) as u32; // 0RGB; shading is never below 0
     byte(color.x) << 16 | byte(color.y) << 8 | byte(color.z)
 }
@@ -344,18 +311,19 @@ pub fn to_rgb(color: Vec3) -> u32 {
 // in every pose (through the eye, holding V and right), so the sampled rays lie in it when pitched.
 pub const MAP_CORNER: Vec3 = vec3(-6.4, 0.0, -9.4); // top left x and z: 12.8 units around the demo
 pub const MAP_SCALE: f64 = 40.0; // map pixels per world unit
-const MIDDLE_ROW: f64 = VIEW as f64 / 2.0; // v = 0.5, exactly y = 0: between two pixel rows
 const SAMPLED_EVERY: usize = 10; // the assignment's "every 10th ray"
 const DOT_RADIUS: i32 = 1; // a hit's dot is 3 x 3 map pixels: 1 either side of its point
 const MARKER_RADIUS: i32 = 3; // the light and the eye are 7 x 7
+const OUTLINE_CHORDS: usize = 256; // R(1 - cos(π/256)) < 1/2 pixel off a circle up to R = 6,600
+// Colours 64+ apart in RGB from each other and the balls', also to red-green colour-blind eyes.
 pub const BACKGROUND: u32 = 0x000000; // black
-pub const CAMERA_COLOR: u32 = 0xff00ff; // magenta: the eye and the screen's middle row
-pub const RAY_COLOR: u32 = 0xffff00; // yellow: a sampled ray up to its hit, a dot there
-pub const MISS_COLOR: u32 = 0x909000; // olive: a sampled ray that hits nothing, to the map's edge
+pub const CAMERA_COLOR: u32 = 0xff20c0; // pink: the eye and the screen's middle row
+pub const RAY_COLOR: u32 = 0xffff00; // yellow: a sampled ray, from the screen to its hit
+pub const MISS_COLOR: u32 = 0x80a0ff; // sky blue: a sampled ray that sees the sky
 pub const LIGHT_COLOR: u32 = 0xff8000; // orange: the light
-pub const SHADOW_COLOR: u32 = 0x983800; // rust: a shadow ray that reaches the light
-pub const BLOCKED_COLOR: u32 = 0x7838c0; // violet: a shadow ray up to what blocks it, a dot there
-pub const MIRROR_COLOR: u32 = 0x008c8c; // teal: a mirror ray to its hit, a dot there, or the edge
+pub const SHADOW_COLOR: u32 = 0x802000; // brown: a shadow ray that reaches the light
+pub const BLOCKED_COLOR: u32 = 0x6040a0; // violet: a shadow ray up to what blocks it, a dot there
+pub const MIRROR_COLOR: u32 = 0x008080; // teal: a mirror ray to its hit, a dot there, or the edge
 
 /// Colours the map pixels up to `radius` pixels either side of a world point, where on the map.
 fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
@@ -371,8 +339,8 @@ fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
     }
 }
 
-/// Draws p(t) for 0 <= t <= ray.t from above: a dot every map pixel along it, wherever its ends.
-fn draw_ray(frame: &mut [u32], ray: &Ray, color: u32) {
+/// Draws p(t) for from <= t <= ray.t from above: a dot every map pixel along it, wherever its ends.
+fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
     let speed = ray.direction.x.hypot(ray.direction.z) * MAP_SCALE; // map pixels per unit of t
     if speed == 0.0 {
         return; // straight up or down: the dot at its start shows it
@@ -382,30 +350,29 @@ fn draw_ray(frame: &mut [u32], ray: &Ray, color: u32) {
     let distance = origin.x.hypot(origin.z);
     // The dot of step s is |distance - s| or more from the map's middle, all of the map within
     // VIEW / √2 of it: only steps from distance - VIEW to distance + VIEW can be on the map.
-    let first = (distance - VIEW as f64).max(0.0);
+    let first = (distance - VIEW as f64).max(from * speed);
     let last = (ray.t * speed).min(distance + VIEW as f64);
     for step in first as usize..=last as usize {
         plot(frame, ray.at(step as f64 / speed), 0, color);
     }
 }
 
-/// Draws a ray up to its nearest hit and a dot there in `hit_color`, or all of it in `miss_color`.
-fn follow(frame: &mut [u32], scene: &Scene, mut ray: Ray, hit_color: u32, miss_color: u32) {
-    let Some(hit) = scene.nearest_hit(&mut ray) else {
-        draw_ray(frame, &ray, miss_color);
+/// Draws a ray from t = `from` to its nearest hit and a dot there in `hit`, or all of it in `miss`.
+fn follow(frame: &mut [u32], scene: &Scene, mut ray: Ray, from: f64, hit: u32, miss: u32) {
+    let Some(found) = scene.nearest_hit(&mut ray) else {
+        draw_ray(frame, &ray, from, miss);
         return;
     };
-    draw_ray(frame, &ray, hit_color);
-    plot(frame, hit.point, DOT_RADIUS, hit_color);
+    draw_ray(frame, &ray, from, hit);
+    plot(frame, found.point, DOT_RADIUS, hit);
 }
 
-/// The right half, back to front: black; the outlines where the slice cuts the spheres; the
-/// shadow and mirror rays; the sampled rays; the screen, the light and the eye.
+/// The right half, back to front: outlines, shadow and mirror rays, sampled rays, camera, light.
 fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     for row in frame.chunks_mut(WIDTH) {
         row[VIEW..].fill(BACKGROUND);
     }
-    let Axes { view, right, up } = camera.axes(); // the slice holds V and right; up is its normal
+    let (view, right, up) = camera.axes(); // the slice holds V and right; up is its normal
     let eye = camera.position;
     for (shape, material) in &scene.objects {
         // The slice cuts a sphere in a circle around C - hN of radius √(r² - h²), h = (C - E).N.
@@ -417,41 +384,42 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
             continue;
         }
         let circle = (radius * radius - height * height).sqrt();
-        // n pieces of a circle of radius R pixels bulge R(1 - cos(π/n)) ≈ π²R/2n² ≤ 1/2 if n ≥ π√R.
-        let pieces = (PI * (circle * MAP_SCALE).sqrt()).ceil().max(3.0); // 3 close a tiny one
         let around = |i: usize| {
-            let angle = TAU * i as f64 / pieces;
+            let angle = TAU * i as f64 / OUTLINE_CHORDS as f64;
             center - up * height + (right * angle.cos() + view * angle.sin()) * circle
         };
         let color = to_rgb(material.color);
-        for i in 0..pieces as usize {
+        for i in 0..OUTLINE_CHORDS {
             let chord = around(i + 1) - around(i);
-            draw_ray(frame, &Ray::new(around(i), chord, chord.length()), color);
+            let ray = Ray::new(around(i), chord, chord.length());
+            draw_ray(frame, &ray, 0.0, color);
         }
     }
     let primary_ray = camera.primary_rays();
     let sampled = || {
         (0..VIEW)
             .step_by(SAMPLED_EVERY)
-            .map(|x| primary_ray(x as f64 + 0.5, MIDDLE_ROW)) // the column's centre
+            .map(|x| primary_ray(x as f64 + 0.5, VIEW as f64 / 2.0)) // column's centre, v = 0.5
     };
     for mut ray in sampled() {
         let Some(hit) = scene.nearest_hit(&mut ray) else {
             continue;
         };
         if let Some(shadow) = scene.shadow_ray(&hit) {
-            follow(frame, scene, shadow, BLOCKED_COLOR, SHADOW_COLOR);
+            follow(frame, scene, shadow, 0.0, BLOCKED_COLOR, SHADOW_COLOR);
         }
         if hit.material.reflectivity > 0.0 {
             let mirror = hit.mirror_ray(ray.direction);
-            follow(frame, scene, mirror, MIRROR_COLOR, MIRROR_COLOR);
+            follow(frame, scene, mirror, 0.0, MIRROR_COLOR, MIRROR_COLOR);
         }
     }
+    // From the screen on, t = d / D.V: before it the rays would bury the eye and the screen.
     for ray in sampled() {
-        follow(frame, scene, ray, RAY_COLOR, MISS_COLOR);
+        let screen = SCREEN_DISTANCE / ray.direction.dot(view);
+        follow(frame, scene, ray, screen, RAY_COLOR, MISS_COLOR);
     }
     let row_start = eye + view * SCREEN_DISTANCE - right; // the screen's middle row: C - right
-    draw_ray(frame, &Ray::new(row_start, right, 2.0), CAMERA_COLOR); // to C + right
+    draw_ray(frame, &Ray::new(row_start, right, 2.0), 0.0, CAMERA_COLOR); // to C + right
     plot(frame, scene.light, MARKER_RADIUS, LIGHT_COLOR);
     // Off the map, the eye's marker stands on the map's edge nearest to it: x, z snapped onto it.
     let snap = |w: f64, corner: f64| w.clamp(corner, corner + (VIEW - 1) as f64 / MAP_SCALE);
@@ -460,23 +428,31 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
 }
 
 // The program: a window whose keys move and turn the camera.
-const TITLE: &str = "raytracer - W A S D R F move, arrows turn, Home: back to the start, Esc quits";
 const MOVE_SPEED: f64 = 2.0; // units a second along each key's direction
 const TURN_SPEED: f64 = 1.5; // radians a second
-const STEPS_PER_SECOND: usize = 60; // the keys are read 60 times a second
 
 fn main() {
-    let mut window =
-        Window::new(TITLE, WIDTH, VIEW, WindowOptions::default()).unwrap_or_else(|error| {
-            eprintln!("raytracer: cannot open the window: {error}");
-            std::process::exit(1)
-        });
-    window.set_target_fps(STEPS_PER_SECOND); // it sleeps for the rest of each step
+    let mut window = Window::new(
+        "raytracer - W A S D R F move, arrows turn, Home: back to the start, Esc quits",
+        WIDTH,
+        VIEW,
+        WindowOptions::default(),
+    )
+    .unwrap_or_else(|error| {
+        let hint = match std::env::var_os("DISPLAY") {
+            None => "; DISPLAY is not set",
+            Some(_) => "",
+        };
+        eprintln!("raytracer: cannot open the window: {error}{hint}");
+        std::process::exit(1)
+    });
+    window.set_target_fps(60); // the keys are read 60 times a second: it sleeps for the rest
     let scene = Scene::default();
     let mut camera = Camera::default();
     let mut shown = None; // the camera of the frame on screen
     let mut frame = vec![BACKGROUND; WIDTH * VIEW];
     let mut last_step = Instant::now();
+    let mut last_sent = Instant::now();
     let mut stale = Vec::new(); // keys down while the window lacked the focus, not yet let go
     while window.is_open() && !window.is_key_down(Key::Escape) {
         let dt = last_step.elapsed().as_secs_f64();
@@ -488,22 +464,29 @@ fn main() {
         stale.retain(|&key| window.is_key_down(key));
         let fresh = |key| window.is_key_down(key) && !stale.contains(&key);
         let held = |key| if fresh(key) { dt } else { 0.0 };
-        let Axes { view, right, .. } = camera.axes();
+        let (view, right, _) = camera.axes();
         let forward = view * (held(Key::W) - held(Key::S));
         let sideways = right * (held(Key::D) - held(Key::A));
         let rise = vec3(0.0, held(Key::R) - held(Key::F), 0.0);
         camera.position = camera.position + (forward + sideways + rise) * MOVE_SPEED;
         camera.yaw += TURN_SPEED * (held(Key::Left) - held(Key::Right));
-        let pitch = camera.pitch + TURN_SPEED * (held(Key::Up) - held(Key::Down));
-        camera.pitch = pitch.clamp(-FRAC_PI_2, FRAC_PI_2); // straight up at most, never over
+        camera.pitch += TURN_SPEED * (held(Key::Up) - held(Key::Down));
+        camera.pitch = camera.pitch.clamp(-FRAC_PI_2, FRAC_PI_2); // straight up at most, never over
         if fresh(Key::Home) {
             camera = Camera::default();
         }
-        // For the window: rendered only when the camera moved, so idle it takes a few % of a core.
-        if shown != Some(camera) {
+        // For a window at rest, a frame is rendered and sent when the camera moved (sending it each
+        // step took 12% of a core), and sent again each second: X repaints an uncovered window so.
+        let moved = shown != Some(camera);
+        if moved {
             render(&scene, &camera, &mut frame);
             shown = Some(camera);
         }
-        window.update_with_buffer(&frame, WIDTH, VIEW).ok(); // it fails only for a wrong size
+        if moved || last_sent.elapsed().as_secs() >= 1 {
+            window.update_with_buffer(&frame, WIDTH, VIEW).ok(); // it fails only for a wrong size
+            last_sent = Instant::now();
+        } else {
+            window.update(); // only reads the keys
+        }
     }
 }

@@ -1,7 +1,8 @@
-//! The picture at the top of the README is the default frame: `render` of the demo scene from the
-//! start pose, both halves. This test compares the program's output with a stored earlier output:
-//! it keeps the picture true, while the other tests check the rendering itself. When the frame changes on purpose, write the picture anew with
-//! `UPDATE_PICTURE=1 cargo test --test picture`, and look at it before committing it.
+//! The README's two pictures are frames `render` draws of the demo scene, both halves: from the start
+//! pose, and from the start pose pitched down 0.15 radians. These tests compare the program's output
+//! with a stored earlier output: they keep the pictures true, while the other tests check the
+//! rendering itself. When a frame changes on purpose, write the pictures anew with
+//! `UPDATE_PICTURE=1 cargo test --test picture`, and look at them before committing them.
 #[allow(dead_code)]
 #[path = "../src/main.rs"]
 mod raytracer;
@@ -10,16 +11,14 @@ use raytracer::*;
 use std::fs::File;
 use std::io::BufReader;
 
-const PICTURE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/default_frame.png");
-
 /// A frame of 0RGB pixels as 8-bit RGB bytes, row after row.
 fn rgb_bytes(frame: &[u32]) -> Vec<u8> {
     let bytes = |pixel: u32| [(pixel >> 16) as u8, (pixel >> 8) as u8, pixel as u8];
     frame.iter().flat_map(|&pixel| bytes(pixel)).collect()
 }
 
-fn write_picture(rgb: &[u8]) {
-    let file = File::create(PICTURE).expect("the picture can be written");
+fn write_picture(path: &str, rgb: &[u8]) {
+    let file = File::create(path).expect("the picture can be written");
     let mut encoder = png::Encoder::new(file, WIDTH as u32, VIEW as u32);
     encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);
@@ -27,8 +26,8 @@ fn write_picture(rgb: &[u8]) {
     writer.write_image_data(rgb).expect("the picture's pixels");
 }
 
-fn read_picture() -> Vec<u8> {
-    let file = File::open(PICTURE).expect("tests/default_frame.png is there");
+fn read_picture(path: &str) -> Vec<u8> {
+    let file = File::open(path).expect("the picture is there");
     let mut reader = png::Decoder::new(BufReader::new(file))
         .read_info()
         .expect("a PNG");
@@ -49,20 +48,35 @@ fn read_picture() -> Vec<u8> {
     rgb
 }
 
-#[test]
-fn the_readme_picture_is_the_default_frame() {
+/// Renders the demo from `camera` and compares it with the picture in `tests/` named `name`.
+fn assert_picture_is_the_frame(name: &str, camera: &Camera) {
+    let path = format!("{}/tests/{name}", env!("CARGO_MANIFEST_DIR"));
     let mut frame = vec![0; WIDTH * VIEW];
-    render(&Scene::default(), &Camera::default(), &mut frame);
+    render(&Scene::default(), camera, &mut frame);
     let rendered = rgb_bytes(&frame);
     if std::env::var_os("UPDATE_PICTURE").is_some() {
-        write_picture(&rendered);
+        write_picture(&path, &rendered);
     }
-    let picture = read_picture();
+    let picture = read_picture(&path);
     let differing = (rendered.chunks(3).zip(picture.chunks(3))).filter(|(a, b)| a != b);
     let count = differing.count();
     assert_eq!(
         count, 0,
-        "{count} pixels differ from tests/default_frame.png; if the change is meant, write it anew \
+        "{count} pixels differ from tests/{name}; if the change is meant, write it anew \
          with UPDATE_PICTURE=1 cargo test --test picture"
     );
+}
+
+#[test]
+fn the_readme_picture_is_the_default_frame() {
+    assert_picture_is_the_frame("default_frame.png", &Camera::default());
+}
+
+#[test]
+fn the_readme_pitched_picture_is_the_start_pose_pitched_down() {
+    let pitched = Camera {
+        pitch: -0.15,
+        ..Camera::default()
+    };
+    assert_picture_is_the_frame("pitched_frame.png", &pitched);
 }

@@ -331,16 +331,16 @@ fn turning_and_moving_the_camera_move_the_image() {
         ..Camera::default()
     };
     let beside = project(&turned, ball);
-    let frame = frame_of(&scene, &turned);
-    assert!(is_red(&frame, beside));
+    let turned_frame = frame_of(&scene, &turned);
+    assert!(is_red(&turned_frame, beside));
     assert!(!is_red(&frame_of(&scene, &Camera::default()), beside));
     // Stepping to z = -1.5 puts the ball dead ahead of the turned camera.
     let moved = Camera {
         position: vec3(0.0, 0.0, -1.5),
         ..turned
     };
-    let frame = frame_of(&scene, &moved);
-    assert!(is_red(&frame, project(&moved, ball)) && !is_red(&frame, beside));
+    let moved_frame = frame_of(&scene, &moved);
+    assert!(is_red(&moved_frame, project(&moved, ball)) && !is_red(&moved_frame, beside));
 }
 
 /// The 2D map: x to the right from MAP_CORNER.x, z down from MAP_CORNER.z, MAP_SCALE pixels a unit.
@@ -431,22 +431,6 @@ fn the_slice_shows_the_camera_the_light_a_sphere_outline_and_the_sampled_rays() 
     assert_eq!(map_pixel(&frame, -3.4, -3.0), BACKGROUND);
 }
 
-#[test]
-fn the_frame_on_all_cores_equals_tracing_each_pixel_on_one() {
-    // (compares) The rows dealt to the threads land where they belong.
-    let scene = Scene::default();
-    let camera = Camera::default();
-    let frame = frame_of(&scene, &camera);
-    let primary_ray = camera.primary_rays();
-    for y in 0..VIEW {
-        for x in 0..VIEW {
-            let ray = primary_ray(x as f64 + 0.5, y as f64 + 0.5);
-            let alone = to_rgb(scene.trace(ray, 0));
-            assert_eq!(frame[y * WIDTH + x], alone, "pixel {x}, {y}");
-        }
-    }
-}
-
 /// The right half of a frame: the 2D slice.
 fn map_of(frame: &[u32]) -> Vec<u32> {
     frame
@@ -530,10 +514,10 @@ fn odd_cameras_render_valid_frames() {
         position: vec3(0.3, 0.0, -4.5),
         ..Camera::default()
     };
-    let frame = frame_of(&scene, &inside);
+    let inside_frame = frame_of(&scene, &inside);
     // From the centre of the mirror ball every ray meets its inside, never the sky.
     let sky = bytes(scene.sky);
-    assert!((0..VIEW).all(|y| (0..VIEW).all(|x| rgb(&frame, (x, y)) != sky)));
+    assert!((0..VIEW).all(|y| (0..VIEW).all(|x| rgb(&inside_frame, (x, y)) != sky)));
     // Below the floor, looking up at it: its underside faces away from the light, so an even
     // square there gets only the ambient light. The demo's first object is its floor.
     let below = Camera {
@@ -541,19 +525,19 @@ fn odd_cameras_render_valid_frames() {
         pitch: 1.0,
         yaw: 0.0,
     };
-    let frame = frame_of(&scene, &below);
+    let below_frame = frame_of(&scene, &below);
     let (_, floor_material) = scene.objects[0];
     let even_square = vec3(0.5, -1.0, -1.5);
-    let green = rgb(&frame, project(&below, even_square))[1];
-    assert_eq!(green, byte(floor_material.color.y * AMBIENT));
+    let underside_green = rgb(&below_frame, project(&below, even_square))[1];
+    assert_eq!(underside_green, byte(floor_material.color.y * AMBIENT));
     let down = Camera {
         pitch: -std::f64::consts::FRAC_PI_2,
         ..Camera::default()
     };
-    let frame = frame_of(&scene, &down);
+    let down_frame = frame_of(&scene, &down);
     // Straight down from y = 0 the view is the floor at y = -1: an even and an odd square's centre.
     for point in [vec3(0.5, -1.0, 0.5), vec3(-0.5, -1.0, 0.5)] {
-        let green = rgb(&frame, project(&down, point))[1];
+        let green = rgb(&down_frame, project(&down, point))[1];
         assert_eq!(green < ODD_BELOW, odd_square(point), "{point:?}: {green}");
     }
 }
@@ -804,44 +788,150 @@ fn the_sampled_rays_are_on_top_along_their_whole_length() {
     }
 }
 
-/// The RGB distance between two 0RGB colours.
-fn rgb_distance(a: u32, b: u32) -> f64 {
-    let channel = |c: u32, shift: u32| f64::from((c >> shift) & 255);
-    let square = |shift| (channel(a, shift) - channel(b, shift)).powi(2);
-    (square(16) + square(8) + square(0)).sqrt()
-}
-
 #[test]
-fn no_two_colours_on_the_map_are_within_64_of_each_other() {
+fn the_sampled_rays_start_at_the_screen_leaving_the_eye_and_the_screen_clear() {
     let scene = Scene::default();
     let poses = [
         Camera::default(),
         Camera {
-            position: vec3(0.0, 0.0, -1.5),
-            ..Camera::default()
-        },
-        // Pitched down: floor hits behind the balls, whose shadow rays the balls block.
-        Camera {
-            position: vec3(0.5, 0.5, 0.0),
-            yaw: 0.0,
-            pitch: -0.35,
-        },
-        Camera {
-            position: vec3(0.0, 0.0, 25.0),
-            ..Camera::default()
+            position: vec3(0.5, 0.3, 1.0),
+            yaw: 0.6,
+            pitch: -0.15,
         },
     ];
-    let mut colors: Vec<u32> = Vec::new();
-    for camera in &poses {
-        for pixel in map_of(&frame_of(&scene, camera)) {
-            if !colors.contains(&pixel) {
-                colors.push(pixel);
+    for camera in poses {
+        let frame = frame_of(&scene, &camera);
+        let (forward, ..) = camera_axes(&camera);
+        for direction in sampled_directions(&camera) {
+            let d = direction.normalize();
+            // The screen is d = 1 ahead of the eye along `forward`: the ray meets it at t = 1 / d.V.
+            let screen = 1.0 / d.dot(forward);
+            let at = |t: f64| camera.position + d * t;
+            // The map shows the ray from above: a unit of t is this many map pixels along it.
+            let map_pixels = d.x.hypot(d.z) * MAP_SCALE;
+            let margin = 3.0 / map_pixels; // 3 map pixels
+            // From past the eye's marker (3 map pixels) to 6 map pixels before the screen's row,
+            // no sampled ray within a map pixel (the neighbouring rays start on the row, which
+            // the edge rays cross at 45 degrees); 3 map pixels past it, the ray within a map pixel
+            // (none of these rays hits anything that close to the screen).
+            let mut t = margin;
+            while t < screen - 2.0 * margin {
+                let near = map_near(&frame, at(t), 1);
+                assert!(
+                    !near.contains(&RAY_COLOR) && !near.contains(&MISS_COLOR),
+                    "{camera:?}: a sampled ray at t = {t:.2}, before the screen at {screen:.2}"
+                );
+                t += 0.25 / map_pixels; // a quarter map pixel
             }
+            let past = map_near(&frame, at(screen + margin), 1);
+            assert!(
+                past.contains(&RAY_COLOR) || past.contains(&MISS_COLOR),
+                "{camera:?}: no sampled ray past the screen"
+            );
+        }
+        // The eye's marker and the screen's middle row, 1 ahead, in the camera's colour.
+        let (_, right, _) = camera_axes(&camera);
+        let middle_of_screen = camera.position + forward;
+        for point in [
+            camera.position,
+            middle_of_screen - right * 0.5,
+            middle_of_screen + right * 0.5,
+        ] {
+            assert_eq!(
+                map_near(&frame, point, 0),
+                [CAMERA_COLOR],
+                "{camera:?}: {point:?}"
+            );
         }
     }
-    // Every kind of thing the legend names is there: black, the eye and the screen (one colour),
-    // the sampled rays, their misses, the light, shadow rays reaching it and blocked, mirror rays,
-    // and the four balls' outlines, each in its ball's own colour.
+}
+
+/// A 0RGB pixel as its red, green and blue bytes, each from 0 to 255.
+fn channels(pixel: u32) -> [f64; 3] {
+    [16, 8, 0].map(|shift| f64::from((pixel >> shift) & 255))
+}
+
+/// The RGB distance between two colours given as bytes.
+fn rgb_distance(a: [f64; 3], b: [f64; 3]) -> f64 {
+    let [dr, dg, db] = [0, 1, 2].map(|i| a[i] - b[i]);
+    (dr * dr + dg * dg + db * db).sqrt()
+}
+
+/// How red-green colour-blind eyes see a colour: Machado, Oliveira and Fernandes (2009), severity
+/// 1, applied to linear RGB (the sRGB curve undone, the matrix applied, the curve redone).
+const PROTANOPIA: [[f64; 3]; 3] = [
+    [0.152286, 1.052583, -0.204868],
+    [0.114503, 0.786281, 0.099216],
+    [-0.003882, -0.048116, 1.051998],
+];
+const DEUTERANOPIA: [[f64; 3]; 3] = [
+    [0.367322, 0.860646, -0.227968],
+    [0.280085, 0.672501, 0.047413],
+    [-0.011820, 0.042940, 0.968881],
+];
+
+/// The sRGB transfer curve's parts (IEC 61966-2-1): linear below the knee, a power above it.
+fn to_linear(byte: f64) -> f64 {
+    let c = byte / 255.0;
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+fn to_byte(linear: f64) -> f64 {
+    let c = linear.clamp(0.0, 1.0);
+    let encoded = if c <= 0.0031308 {
+        12.92 * c
+    } else {
+        1.055 * c.powf(1.0 / 2.4) - 0.055
+    };
+    (encoded * 255.0).round()
+}
+
+fn simulate(pixel: u32, matrix: &[[f64; 3]; 3]) -> [f64; 3] {
+    let linear = channels(pixel).map(to_linear);
+    matrix.map(|row| to_byte(row[0] * linear[0] + row[1] * linear[1] + row[2] * linear[2]))
+}
+
+/// A colour as normal, protanopic and deuteranopic eyes see it.
+fn as_seen(pixel: u32) -> [[f64; 3]; 3] {
+    [
+        channels(pixel),
+        simulate(pixel, &PROTANOPIA),
+        simulate(pixel, &DEUTERANOPIA),
+    ]
+}
+
+/// The hue in degrees (0 red, 120 green, 240 blue) of a colour given as bytes.
+fn hue(color: [f64; 3]) -> f64 {
+    let [r, g, b] = color;
+    // The angle of the colour around the grey axis, as the standard hexagon projection gives it.
+    let x = r - (g + b) / 2.0;
+    let y = (g - b) * 3f64.sqrt() / 2.0;
+    y.atan2(x).to_degrees().rem_euclid(360.0)
+}
+
+/// Two colours closer than this in RGB, for any of the three eyes, are too alike to tell apart.
+const LEAST_APART: f64 = 64.0;
+/// A miss and a hit differ in hue by at least this many degrees, for each of the three eyes.
+const LEAST_HUE_APART: f64 = 60.0;
+
+/// The README's two pictures: the start pose, and the same pitched slightly down.
+fn readme_poses() -> [Camera; 2] {
+    let pitched = Camera {
+        pitch: -0.15,
+        ..Camera::default()
+    };
+    [Camera::default(), pitched]
+}
+
+#[test]
+fn every_map_colour_is_told_apart_by_every_eye() {
+    let scene = Scene::default();
+    // The legend's colours: black, the eye and the screen (one colour), the sampled rays, their
+    // misses, the light, shadow rays reaching it and blocked, mirror rays; then the balls' outlines.
     let named = [
         BACKGROUND,
         CAMERA_COLOR,
@@ -852,25 +942,80 @@ fn no_two_colours_on_the_map_are_within_64_of_each_other() {
         BLOCKED_COLOR,
         MIRROR_COLOR,
     ];
-    let outlines = scene
+    let outlines: Vec<u32> = scene
         .objects
         .iter()
         .filter_map(|(shape, material)| match shape {
             Shape::Sphere { .. } => Some(pixel_of(material.color)),
             Shape::Plane { .. } => None,
-        });
-    let expected: Vec<u32> = named.into_iter().chain(outlines).collect();
-    for color in &expected {
-        assert!(colors.contains(color), "{color:06x} missing: {colors:06x?}");
+        })
+        .collect();
+    // Every one of them shows in one of the README's two pictures.
+    let mut in_pictures: Vec<u32> = Vec::new();
+    for camera in &readme_poses() {
+        in_pictures.extend(map_of(&frame_of(&scene, camera)));
     }
-    // Every pair apart: the named colours (two names of one colour would show as one on the map),
-    // and any other colour the map shows.
-    let others = colors.iter().filter(|color| !expected.contains(color));
-    let all: Vec<u32> = expected.iter().chain(others).copied().collect();
+    for color in named.iter().chain(&outlines) {
+        assert!(
+            in_pictures.contains(color),
+            "{color:06x} is in neither picture"
+        );
+    }
+    // Other level and slightly pitched poses of the demo: close to the balls, turned, far back.
+    let more = [
+        (vec3(0.0, 0.0, -1.5), 0.0, 0.0),
+        (vec3(0.5, 0.5, 0.0), 0.0, -0.35),
+        (vec3(-1.0, 0.0, 1.0), 0.4, 0.1),
+        (vec3(1.5, -0.3, -1.0), -0.6, -0.2),
+        (vec3(0.0, 0.0, 25.0), 0.0, 0.0),
+    ];
+    let mut seen = in_pictures;
+    for (position, yaw, pitch) in more {
+        let camera = Camera {
+            position,
+            yaw,
+            pitch,
+        };
+        seen.extend(map_of(&frame_of(&scene, &camera)));
+    }
+    seen.sort_unstable();
+    seen.dedup();
+    // Every pair of colours, named or seen, far enough apart as each eye sees them; two balls'
+    // outlines are told apart by where they are, not by colour.
+    let others = seen
+        .iter()
+        .filter(|color| !named.contains(color) && !outlines.contains(color));
+    let all: Vec<u32> = named
+        .iter()
+        .chain(&outlines)
+        .chain(others)
+        .copied()
+        .collect();
     for (i, &a) in all.iter().enumerate() {
         for &b in &all[..i] {
-            assert!(rgb_distance(a, b) >= 64.0, "{a:06x} and {b:06x}");
+            if outlines.contains(&a) && outlines.contains(&b) {
+                continue;
+            }
+            for (eye, (seen_a, seen_b)) in ["normal", "protanopia", "deuteranopia"]
+                .iter()
+                .zip(as_seen(a).into_iter().zip(as_seen(b)))
+            {
+                let apart = rgb_distance(seen_a, seen_b);
+                assert!(
+                    apart >= LEAST_APART,
+                    "{a:06x} and {b:06x}, {eye}: {apart:.0}"
+                );
+            }
         }
+    }
+    // A ray that misses differs from one that hits in hue, not only in brightness.
+    for (hit, miss) in as_seen(RAY_COLOR).into_iter().zip(as_seen(MISS_COLOR)) {
+        let turn = (hue(hit) - hue(miss)).abs();
+        let apart = turn.min(360.0 - turn);
+        assert!(
+            apart >= LEAST_HUE_APART,
+            "hues {hit:?} and {miss:?}: {apart:.0} degrees"
+        );
     }
 }
 

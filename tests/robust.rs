@@ -203,7 +203,7 @@ fn a_thousand_camera_poses_and_hundreds_of_random_scenes() {
     // (compares) Every FRAME_EVERY-th pose's frame, rendered into two buffers.
     for seed in 1..=POSES {
         let (scene, camera) = random_case(seed, SCENE_EVERY);
-        let case = format!("seed {seed}: {camera:?} in {scene:?}");
+        let case = format!("seed {seed}: {camera:?}"); // the seed gives the scene again
         assert_valid_rays(&scene, &camera, &case);
         if seed.is_multiple_of(FRAME_EVERY) {
             assert_same_frame_in_any_buffer(&scene, &camera, &case);
@@ -326,17 +326,15 @@ fn a_hit_is_the_nearest_root_in_front_of_the_ray() {
         let normal = random.point(1.0).normalize(); // a direction at random
         let offset = random.between(-OFFSET_SPREAD, OFFSET_SPREAD);
         let sphere = Shape::Sphere { center, radius };
-        let expected = expected_sphere_hit(&ray, center, radius);
         assert_hit(
             sphere.intersect(&ray),
-            expected,
+            expected_sphere_hit(&ray, center, radius),
             &format!("case {case}, sphere"),
         );
         let plane = Shape::Plane { normal, offset };
-        let expected = expected_plane_hit(&ray, normal, offset);
         assert_hit(
             plane.intersect(&ray),
-            expected,
+            expected_plane_hit(&ray, normal, offset),
             &format!("case {case}, plane"),
         );
     }
@@ -519,14 +517,15 @@ fn facing_mirrors_stop_at_the_maximum_depth() {
     );
 }
 
-/// Runs the program with no display and returns (status, stdout, stderr).
-fn run(args: &[&str]) -> (Option<i32>, String, String) {
-    let output = Command::new(env!("CARGO_BIN_EXE_raytracer"))
-        .args(args)
-        .env_remove("DISPLAY")
-        .env_remove("WAYLAND_DISPLAY")
-        .output()
-        .expect("the program runs");
+/// Runs the program with `display` as DISPLAY (none if `None`) and returns (status, stdout, stderr).
+fn run(display: Option<&str>, args: &[&str]) -> (Option<i32>, String, String) {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_raytracer"));
+    command.args(args).env_remove("WAYLAND_DISPLAY");
+    match display {
+        Some(display) => command.env("DISPLAY", display),
+        None => command.env_remove("DISPLAY"),
+    };
+    let output = command.output().expect("the program runs");
     let text = |bytes: Vec<u8>| String::from_utf8(bytes).unwrap();
     (
         output.status.code(),
@@ -535,16 +534,27 @@ fn run(args: &[&str]) -> (Option<i32>, String, String) {
     )
 }
 
+/// What the one line says when DISPLAY is not set.
+const NOT_SET: &str = "DISPLAY is not set";
+
 #[test]
 fn with_no_display_it_says_so_in_one_line_and_ignores_arguments() {
     for args in [&[][..], &["--help"], &["scene.txt", "2"]] {
-        let (status, stdout, stderr) = run(args);
+        let (status, stdout, stderr) = run(None, args);
         assert_eq!(status, Some(1), "{args:?}: {stderr}");
         assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
-        // The line says what failed: opening the window, as the X display could not be opened.
+        // The line says what failed, opening the window, and what to check: DISPLAY.
         assert!(stderr.contains("cannot open the window"), "{stderr}");
-        assert!(stderr.contains("Display") && stdout.is_empty(), "{stderr}");
+        assert!(stderr.contains(NOT_SET) && stdout.is_empty(), "{stderr}");
     }
+    // DISPLAY set, to a display no X server serves: the same failure, and not the DISPLAY hint.
+    let (status, _, stderr) = run(Some(":4711"), &[]);
+    assert_eq!(status, Some(1), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("cannot open the window") && !stderr.contains(NOT_SET),
+        "{stderr}"
+    );
 }
 
 #[test]

@@ -1,4 +1,4 @@
-//! `cargo bench`: 100 frames of the default view on all cores (`taskset -c 0 cargo bench` for one).
+//! `cargo bench`: 100 frames of the default view, rendered on one core (`render` is one loop).
 #[allow(dead_code)]
 #[path = "../../src/main.rs"]
 mod raytracer;

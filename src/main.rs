@@ -6,11 +6,6 @@ use std::time::Instant;
 
 pub const VIEW: usize = 512; // each half of the window is VIEW x VIEW pixels
 pub const WIDTH: usize = 2 * VIEW; // a row of the frame: the 3D view, then the 2D slice
-pub const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
-pub const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
-const ODD_SQUARE: f64 = 0.25; // odd squares are this bright beside the even ones
-const SCREEN_DISTANCE: f64 = 1.0; // the slide's d: a screen 2 wide at distance 1 sees 90 degrees
-const SELF_HIT: f64 = 1e-6; // a ray leaving a surface starts this far off it, times 1 + |point|
 
 // Vector math: points, directions and colours (x, y, z = red, green, blue) are all a Vec3.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -47,7 +42,7 @@ impl ops::Add for Vec3 {
 impl ops::Sub for Vec3 {
     type Output = Vec3;
     fn sub(self, other: Vec3) -> Vec3 {
-        self + -other
+        vec3(self.x - other.x, self.y - other.y, self.z - other.z)
     }
 }
 
@@ -65,11 +60,11 @@ impl ops::Mul<f64> for Vec3 {
     }
 }
 
-// The ray: p(t) = O + tD with D normalized and 0 < t < ray.t, the distance it reaches so far.
+// Step 2, the ray: p(t) = O + tD with D normalized and 0 < t < ray.t, the distance it reaches.
 pub struct Ray {
-    pub origin: Vec3,
-    pub direction: Vec3,
-    pub t: f64,
+    origin: Vec3,
+    direction: Vec3,
+    t: f64,
 }
 
 impl Ray {
@@ -85,8 +80,11 @@ impl Ray {
     }
 }
 
-// The camera: eye E looking along V at a screen centred on C = E + dV. Its corners are p0 bottom
-// left, p1 bottom right and p2 top left; a ray goes through p(u, v) = p0 + u(p1 - p0) + v(p2 - p0).
+// Steps 1 and 4, the camera: eye E looking along V at a screen centred on C = E + dV. Its corners
+// are p0 bottom left, p1 bottom right, p2 top left; a ray goes through p(u, v) = p0 + u(p1 - p0) +
+// v(p2 - p0). By default it is at (0, 0, 0) looking at (0, 0, -1), as the assignment sets it.
+const SCREEN_DISTANCE: f64 = 1.0; // the slide's d: a screen 2 wide at distance 1 sees 90 degrees
+
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Camera {
     pub position: Vec3,
@@ -94,36 +92,42 @@ pub struct Camera {
     pub pitch: f64, // radians; positive looks up
 }
 
+/// The unit direction `yaw` radians left of -z about +y and `pitch` radians up from level.
+fn direction(yaw: f64, pitch: f64) -> Vec3 {
+    vec3(
+        -yaw.sin() * pitch.cos(),
+        pitch.sin(),
+        -yaw.cos() * pitch.cos(),
+    )
+}
+
 impl Camera {
-    /// V from the yaw and the pitch; right is V turned a quarter about y and level; up = right × V.
+    /// V, right and up: the slide's camera matrix, whose columns turn its (1, 0, 0), (0, 1, 0) and
+    /// (0, 0, -1) into right, up and V, so that p0 = C + (-1, -1, 0) becomes C - right - up.
     fn axes(&self) -> (Vec3, Vec3, Vec3) {
-        let (sin_yaw, cos_yaw) = self.yaw.sin_cos();
-        let (sin_pitch, cos_pitch) = self.pitch.sin_cos();
-        let view = vec3(-sin_yaw * cos_pitch, sin_pitch, -cos_yaw * cos_pitch);
-        let right = vec3(cos_yaw, 0.0, -sin_yaw);
-        let up = vec3(sin_yaw * sin_pitch, cos_pitch, cos_yaw * sin_pitch);
-        (view, right, up)
+        (
+            direction(self.yaw, self.pitch),
+            direction(self.yaw - FRAC_PI_2, 0.0), // a quarter turn right, level
+            direction(self.yaw, self.pitch + FRAC_PI_2), // a quarter turn up
+        )
     }
     /// Step 4: the primary ray through (x, y), in pixels from the screen's top left: O = E,
-    /// D = p(u, v) - E, u = x / VIEW, v = 1 - y / VIEW; a function of (x, y): corners found once.
-    pub fn primary_rays(&self) -> impl Fn(f64, f64) -> Ray {
+    /// D = p(u, v) - E, u = x / VIEW, v = 1 - y / VIEW.
+    pub fn primary_ray(&self, x: f64, y: f64) -> Ray {
         let (view, right, up) = self.axes();
-        let eye = self.position;
         // C, p0, p1, p2 less E: D = p(u, v) - E then loses nothing to rounding (E + x - E != x).
         let center = view * SCREEN_DISTANCE;
         let p0 = center - right - up;
         let p1 = center + right - up;
         let p2 = center - right + up;
-        move |x, y| {
-            let u = x / VIEW as f64;
-            let v = 1.0 - y / VIEW as f64;
-            let direction = p0 + (p1 - p0) * u + (p2 - p0) * v; // p(u, v) - E
-            Ray::new(eye, direction, f64::INFINITY)
-        }
+        let u = x / VIEW as f64;
+        let v = 1.0 - y / VIEW as f64;
+        let direction = p0 + (p1 - p0) * u + (p2 - p0) * v; // p(u, v) - E
+        Ray::new(self.position, direction, f64::INFINITY)
     }
 }
 
-// Primitives: the sphere (p - C).(p - C) = r² and the plane p.N + d = 0, each with a material.
+// Step 3, primitives: the sphere (p - C).(p - C) = r² and the plane p.N + d = 0, with materials.
 #[derive(Clone, Copy)]
 pub enum Shape {
     Sphere { center: Vec3, radius: f64 },
@@ -208,6 +212,11 @@ impl Default for Scene {
 
 // Shading: colour = surface × (ambient + (1 - ambient) N.L where the shadow ray reaches the light),
 // mixed by the reflectivity with the colour the mirror ray R = D - 2(D.N)N brings back.
+pub const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
+pub const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
+const LIFT: f64 = 1e-6; // a ray leaving a surface starts this far off it, times 1 + |point|
+const ODD_SQUARE: f64 = 0.25; // odd squares are this bright beside the even ones
+
 struct Hit {
     point: Vec3,  // where a ray hits
     normal: Vec3, // unit, on the side the ray comes from
@@ -217,7 +226,7 @@ struct Hit {
 impl Hit {
     /// A ray leaving the hit, lifted along N past the point's rounding error, which grows with |p|.
     fn outgoing(&self, direction: Vec3, t: f64) -> Ray {
-        let lift = self.normal * (SELF_HIT * (1.0 + self.point.length()));
+        let lift = self.normal * (LIFT * (1.0 + self.point.length()));
         Ray::new(self.point + lift, direction, t)
     }
     /// The mirror ray of a ray along D: R = D - 2(D.N)N.
@@ -285,16 +294,15 @@ impl Scene {
 /// Step 8, the slide's checkerboard F = ((int)(2 λ1) + (int)λ2) & 1 with λ1 = x, λ2 = z, for unit
 /// squares (no 2) and with floor for (int): truncation would merge the squares either side of 0.
 fn odd_square(point: Vec3) -> bool {
-    (point.x.floor() + point.z.floor()) as i64 & 1 == 1
+    (point.x.floor() + point.z.floor()).rem_euclid(2.0) == 1.0 // the slide's & 1: the sum mod 2
 }
 
 // Rendering, the slide's step 6: for each pixel, the colour of its primary ray.
 /// Fills a frame of WIDTH x VIEW 0RGB pixels: the 3D view, then the 2D slice.
 pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
-    let primary_ray = camera.primary_rays();
     for y in 0..VIEW {
         for x in 0..VIEW {
-            let ray = primary_ray(x as f64 + 0.5, y as f64 + 0.5); // the pixel's centre
+            let ray = camera.primary_ray(x as f64 + 0.5, y as f64 + 0.5); // the pixel's centre
             frame[y * WIDTH + x] = to_rgb(scene.trace(ray, 0));
         }
     }
@@ -307,14 +315,14 @@ fn to_rgb(color: Vec3) -> u32 {
 }
 
 // The 2D slice, the assignment's "for y = 0, visualize every 10th ray", seen from above (x to the
-// right, -z up). y = 0 is the screen's middle row's plane in the start pose; it is that row's plane
-// in every pose (through the eye, holding V and right), so the sampled rays lie in it when pitched.
+// right, -z up): the plane of the screen's middle row, through the eye along V and right. It is
+// y = 0 in the start pose and tilts with the camera, so that the sampled rays always lie in it.
 pub const MAP_CORNER: Vec3 = vec3(-6.4, 0.0, -9.4); // top left x and z: 12.8 units around the demo
 pub const MAP_SCALE: f64 = 40.0; // map pixels per world unit
 const SAMPLED_EVERY: usize = 10; // the assignment's "every 10th ray"
 const DOT_RADIUS: i32 = 1; // a hit's dot is 3 x 3 map pixels: 1 either side of its point
 const MARKER_RADIUS: i32 = 3; // the light and the eye are 7 x 7
-const OUTLINE_CHORDS: usize = 256; // R(1 - cos(π/256)) < 1/2 pixel off a circle up to R = 6,600
+const OUTLINE_CHORDS: usize = 256; // R(1 - cos(π/256)) < 1/2 map pixel up to R = 6,600 of them
 // Colours 64+ apart in RGB from each other and the balls', also to red-green colour-blind eyes.
 pub const BACKGROUND: u32 = 0x000000; // black
 pub const CAMERA_COLOR: u32 = 0xff20c0; // pink: the eye and the screen's middle row
@@ -341,33 +349,33 @@ fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
 
 /// Draws p(t) for from <= t <= ray.t from above: a dot every map pixel along it, wherever its ends.
 fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
-    let speed = ray.direction.x.hypot(ray.direction.z) * MAP_SCALE; // map pixels per unit of t
-    if speed == 0.0 {
+    let pixels_per_t = ray.direction.x.hypot(ray.direction.z) * MAP_SCALE; // along the map
+    if pixels_per_t == 0.0 {
         return; // straight up or down: the dot at its start shows it
     }
     let map_middle = vec3(0.5, 0.0, 0.5) * VIEW as f64; // in map pixels
-    let origin = (ray.origin - MAP_CORNER) * MAP_SCALE - map_middle; // p(0), from the middle
-    let distance = origin.x.hypot(origin.z);
+    let start = (ray.origin - MAP_CORNER) * MAP_SCALE - map_middle; // p(0) in map pixels
+    let distance = start.x.hypot(start.z);
     // The dot of step s is |distance - s| or more from the map's middle, all of the map within
     // VIEW / √2 of it: only steps from distance - VIEW to distance + VIEW can be on the map.
-    let first = (distance - VIEW as f64).max(from * speed);
-    let last = (ray.t * speed).min(distance + VIEW as f64);
+    let first = (distance - VIEW as f64).max(from * pixels_per_t).ceil();
+    let last = (ray.t * pixels_per_t).min(distance + VIEW as f64);
     for step in first as usize..=last as usize {
-        plot(frame, ray.at(step as f64 / speed), 0, color);
+        plot(frame, ray.at(step as f64 / pixels_per_t), 0, color);
     }
 }
 
-/// Draws a ray from t = `from` to its nearest hit and a dot there in `hit`, or all of it in `miss`.
-fn follow(frame: &mut [u32], scene: &Scene, mut ray: Ray, from: f64, hit: u32, miss: u32) {
-    let Some(found) = scene.nearest_hit(&mut ray) else {
-        draw_ray(frame, &ray, from, miss);
+/// Draws a ray from t = `from` to its nearest hit and a dot there, or all of it, in those colours.
+fn follow(frame: &mut [u32], scene: &Scene, mut ray: Ray, from: f64, on_hit: u32, on_miss: u32) {
+    let Some(hit) = scene.nearest_hit(&mut ray) else {
+        draw_ray(frame, &ray, from, on_miss);
         return;
     };
-    draw_ray(frame, &ray, from, hit);
-    plot(frame, found.point, DOT_RADIUS, hit);
+    draw_ray(frame, &ray, from, on_hit);
+    plot(frame, hit.point, DOT_RADIUS, on_hit);
 }
 
-/// The right half, back to front: outlines, shadow and mirror rays, sampled rays, camera, light.
+/// The map, back to front: outlines, shadow and mirror rays, sampled rays, screen, light, eye.
 fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     for row in frame.chunks_mut(WIDTH) {
         row[VIEW..].fill(BACKGROUND);
@@ -383,10 +391,10 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
         if height.abs() >= radius {
             continue;
         }
-        let circle = (radius * radius - height * height).sqrt();
+        let circle_radius = (radius * radius - height * height).sqrt();
         let around = |i: usize| {
             let angle = TAU * i as f64 / OUTLINE_CHORDS as f64;
-            center - up * height + (right * angle.cos() + view * angle.sin()) * circle
+            center - up * height + (right * angle.cos() + view * angle.sin()) * circle_radius
         };
         let color = to_rgb(material.color);
         for i in 0..OUTLINE_CHORDS {
@@ -395,11 +403,10 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
             draw_ray(frame, &ray, 0.0, color);
         }
     }
-    let primary_ray = camera.primary_rays();
     let sampled = || {
         (0..VIEW)
             .step_by(SAMPLED_EVERY)
-            .map(|x| primary_ray(x as f64 + 0.5, VIEW as f64 / 2.0)) // column's centre, v = 0.5
+            .map(|x| camera.primary_ray(x as f64 + 0.5, VIEW as f64 / 2.0)) // v = 0.5: y = 0
     };
     for mut ray in sampled() {
         let Some(hit) = scene.nearest_hit(&mut ray) else {
@@ -427,7 +434,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     plot(frame, marker, MARKER_RADIUS, CAMERA_COLOR);
 }
 
-// The program: a window whose keys move and turn the camera.
+// Step 7, the program: a window whose keys move and turn the camera.
 const MOVE_SPEED: f64 = 2.0; // units a second along each key's direction
 const TURN_SPEED: f64 = 1.5; // radians a second
 

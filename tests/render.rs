@@ -29,7 +29,11 @@ fn sphere(center: Vec3, radius: f64, material: Material) -> (Shape, Material) {
     (Shape::Sphere { center, radius }, material)
 }
 
-fn floor() -> (Shape, Material) {
+/// The floor's height, as in the demo.
+const FLOOR_Y: f64 = -1.0;
+
+/// A white checkered floor y = FLOOR_Y: the plane p.N + d = 0 with N = (0, 1, 0), d = -FLOOR_Y.
+fn checkered_floor() -> (Shape, Material) {
     let checkered = Material {
         color: WHITE,
         reflectivity: 0.0,
@@ -38,10 +42,18 @@ fn floor() -> (Shape, Material) {
     (
         Shape::Plane {
             normal: vec3(0.0, 1.0, 0.0),
-            offset: 1.0,
+            offset: -FLOOR_Y,
         },
         checkered,
     )
+}
+
+/// A pixel counts as red where its red byte is over this many times its green and its blue: a
+/// RED ball shows 9 times, however lit; the sky and the floor never more than once.
+const RED_OVER: u32 = 2;
+
+fn is_red([r, g, b]: [u32; 3]) -> bool {
+    r > RED_OVER * g && r > RED_OVER * b
 }
 
 fn scene_of(objects: Vec<(Shape, Material)>, light: Vec3) -> Scene {
@@ -165,8 +177,8 @@ fn a_sphere_covers_its_projected_centre_and_not_past_its_silhouette() {
     );
     let camera = Camera::default();
     let frame = frame_of(&scene, &camera);
-    let [r, g, b] = rgb(&frame, project(&camera, center));
-    assert!(r > 2 * g && r > 2 * b, "centre is {:?}, not red", [r, g, b]);
+    let centre = rgb(&frame, project(&camera, center));
+    assert!(is_red(centre), "centre is {centre:?}, not red");
     // The silhouette seen from the eye is a cone of half-angle asin(r / distance): step past it.
     let distance = center.length();
     let half_angle = (radius / distance).asin() + 0.02; // 0.02 radians past it: 5 pixels
@@ -201,7 +213,10 @@ fn a_sphere_is_shaded_by_n_dot_l_on_the_side_facing_the_light() {
 fn a_sphere_between_floor_and_light_casts_a_shadow() {
     let center = vec3(0.0, 0.0, -5.0);
     let light = vec3(0.0, 3.0, -5.0);
-    let scene = scene_of(vec![floor(), sphere(center, 1.0, matte(RED))], light);
+    let scene = scene_of(
+        vec![checkered_floor(), sphere(center, 1.0, matte(RED))],
+        light,
+    );
     let camera = Camera {
         position: vec3(0.0, 1.0, 0.0),
         pitch: -0.3,
@@ -211,8 +226,8 @@ fn a_sphere_between_floor_and_light_casts_a_shadow() {
     // Two floor points on even squares, both seen from the eye (their sight lines pass the ball's
     // centre 1.37 and 2.65 away): the segment from the first to the light passes the centre 0.69
     // away, inside the ball, so it gets only the ambient light; the second's passes 1.65 away.
-    let shaded = vec3(-0.5, -1.0, -4.2);
-    let lit = vec3(-2.5, -1.0, -4.2);
+    let shaded = vec3(-0.5, FLOOR_Y, -4.2);
+    let lit = vec3(-2.5, FLOOR_Y, -4.2);
     let up = vec3(0.0, 1.0, 0.0);
     for (point, share) in [(shaded, AMBIENT), (lit, lit_share(lit, up, light))] {
         let green = rgb(&frame, project(&camera, point))[1];
@@ -236,15 +251,18 @@ fn only_occluders_between_the_point_and_the_light_cast_shadows() {
         pitch: -0.3,
         yaw: 0.0,
     };
-    let lit = frame_of(&scene_of(vec![floor()], light), &camera);
-    let with_balls = frame_of(&scene_of(vec![floor(), above, beside], light), &camera);
-    let point = project(&camera, vec3(0.5, -1.0, -3.5));
+    let lit = frame_of(&scene_of(vec![checkered_floor()], light), &camera);
+    let with_balls = frame_of(
+        &scene_of(vec![checkered_floor(), above, beside], light),
+        &camera,
+    );
+    let point = project(&camera, vec3(0.5, FLOOR_Y, -3.5));
     assert_eq!(rgb(&with_balls, point), rgb(&lit, point));
 }
 
 #[test]
 fn the_floor_is_checkered_by_floor_x_plus_floor_z() {
-    let scene = scene_of(vec![floor()], vec3(0.0, 100.0, 0.0));
+    let scene = scene_of(vec![checkered_floor()], vec3(0.0, 100.0, 0.0));
     let camera = Camera {
         position: vec3(0.0, 1.0, 3.0),
         pitch: -0.5,
@@ -254,7 +272,7 @@ fn the_floor_is_checkered_by_floor_x_plus_floor_z() {
     // Square centres on both sides of x = 0 and of z = 0.
     for x in [-1.5, -0.5, 0.5, 1.5] {
         for z in [-1.5, -0.5, 0.5, 1.5] {
-            let point = vec3(x, -1.0, z);
+            let point = vec3(x, FLOOR_Y, z);
             let green = rgb(&frame, project(&camera, point))[1];
             assert_eq!(
                 green < ODD_BELOW,
@@ -267,11 +285,11 @@ fn the_floor_is_checkered_by_floor_x_plus_floor_z() {
 
 /// Where the mirror sphere's pixel (x, y) sends its reflected ray, by the test's own geometry:
 /// the point it hits the unit sphere at `center` and the reflected direction, if it hits.
-fn reflected_ray(camera: &Camera, center: Vec3, (x, y): (usize, usize)) -> Option<(Vec3, Vec3)> {
+fn reflected_ray(eye: Vec3, center: Vec3, (x, y): (usize, usize)) -> Option<(Vec3, Vec3)> {
     let across = (x as f64 + 0.5) / HALF_VIEW - 1.0;
     let upward = 1.0 - (y as f64 + 0.5) / HALF_VIEW;
-    let d = vec3(across, upward, -1.0).normalize(); // the default camera
-    let point = ray_sphere(camera.position, d, center, 1.0)?;
+    let d = vec3(across, upward, -1.0).normalize(); // a camera looking down -z, at any `eye`
+    let point = ray_sphere(eye, d, center, 1.0)?;
     let n = point - center;
     Some((point, d - n * (2.0 * d.dot(n))))
 }
@@ -285,7 +303,7 @@ fn a_mirror_sphere_reflects_the_checkered_floor_and_the_sky() {
         checkered: false,
     };
     let light = vec3(0.0, 20.0, 20.0);
-    let scene = scene_of(vec![floor(), sphere(center, 1.0, mirror)], light);
+    let scene = scene_of(vec![checkered_floor(), sphere(center, 1.0, mirror)], light);
     let camera = Camera::default();
     let frame = frame_of(&scene, &camera);
     let sky = bytes(SKY);
@@ -294,14 +312,14 @@ fn a_mirror_sphere_reflects_the_checkered_floor_and_the_sky() {
     // near a square's edge or in the ball's shadow.
     for y in (0..VIEW).step_by(4) {
         for x in (0..VIEW).step_by(4) {
-            let Some((point, direction)) = reflected_ray(&camera, center, (x, y)) else {
+            let Some((point, direction)) = reflected_ray(camera.position, center, (x, y)) else {
                 continue;
             };
             if direction.y >= 0.0 {
                 assert_eq!(rgb(&frame, (x, y)), sky, "pixel {x}, {y} reflects the sky");
                 continue;
             }
-            let on_floor = point + direction * ((-1.0 - point.y) / direction.y);
+            let on_floor = point + direction * ((FLOOR_Y - point.y) / direction.y);
             let near_edge = |w: f64| (w - w.round()).abs() < 0.05; // within 0.05 units of it
             if near_edge(on_floor.x) || near_edge(on_floor.z) {
                 continue; // too near a square's edge to say which square the pixel shows
@@ -320,10 +338,6 @@ fn a_mirror_sphere_reflects_the_checkered_floor_and_the_sky() {
 fn turning_and_moving_the_camera_move_the_image() {
     let ball = vec3(-3.0, 0.0, -1.5);
     let scene = scene_of(vec![sphere(ball, 0.5, matte(RED))], vec3(0.0, 5.0, 0.0));
-    let is_red = |frame: &[u32], at| {
-        let [r, g, b] = rgb(frame, at);
-        r > 2 * g && r > 2 * b
-    };
     // Straight ahead is -z; the ball is far to the left, out of view: after a quarter turn left
     // the view looks down -x, the ball is 3 ahead and 1.5 right: half way to the right edge.
     let turned = Camera {
@@ -332,15 +346,23 @@ fn turning_and_moving_the_camera_move_the_image() {
     };
     let beside = project(&turned, ball);
     let turned_frame = frame_of(&scene, &turned);
-    assert!(is_red(&turned_frame, beside));
-    assert!(!is_red(&frame_of(&scene, &Camera::default()), beside));
+    assert!(is_red(rgb(&turned_frame, beside)), "turned: the ball");
+    let ahead_frame = frame_of(&scene, &Camera::default());
+    assert!(!is_red(rgb(&ahead_frame, beside)), "not turned: no ball");
     // Stepping to z = -1.5 puts the ball dead ahead of the turned camera.
     let moved = Camera {
         position: vec3(0.0, 0.0, -1.5),
         ..turned
     };
     let moved_frame = frame_of(&scene, &moved);
-    assert!(is_red(&moved_frame, project(&moved, ball)) && !is_red(&moved_frame, beside));
+    assert!(
+        is_red(rgb(&moved_frame, project(&moved, ball))),
+        "moved: the ball ahead"
+    );
+    assert!(
+        !is_red(rgb(&moved_frame, beside)),
+        "moved: no ball to the right"
+    );
 }
 
 /// The 2D map: x to the right from MAP_CORNER.x, z down from MAP_CORNER.z, MAP_SCALE pixels a unit.
@@ -471,7 +493,7 @@ fn with_a_level_camera_the_slice_rays_stay_in_the_eyes_plane() {
         };
         let light = vec3(0.0, 5.0, 0.0);
         let empty = frame_of(&scene_of(vec![], light), &camera);
-        let floor_only = frame_of(&scene_of(vec![floor()], light), &camera);
+        let floor_only = frame_of(&scene_of(vec![checkered_floor()], light), &camera);
         assert!(
             map_of(&empty) == map_of(&floor_only),
             "{position:?}, yaw {yaw}"
@@ -484,7 +506,7 @@ fn a_sphere_cut_by_the_eyes_plane_shows_the_hits_on_its_outline() {
     // Centre half a unit below the eye: the plane y = 0 cuts it in a circle of radius sqrt(0.75).
     let center = vec3(0.0, -0.5, -4.0);
     let scene = scene_of(
-        vec![floor(), sphere(center, 1.0, matte(RED))],
+        vec![checkered_floor(), sphere(center, 1.0, matte(RED))],
         vec3(0.0, 5.0, 2.0),
     );
     let frame = frame_of(&scene, &Camera::default());
@@ -509,34 +531,45 @@ fn a_sphere_cut_by_the_eyes_plane_shows_the_hits_on_its_outline() {
 
 #[test]
 fn odd_cameras_render_valid_frames() {
-    let scene = Scene::default();
+    // A scene like the demo: the checkered floor, a mirror ball and the light up to the left.
+    let ball_center = vec3(0.3, 0.0, -4.5);
+    let mirror = Material {
+        color: WHITE,
+        reflectivity: 0.85,
+        checkered: false,
+    };
+    let objects = vec![checkered_floor(), sphere(ball_center, 1.0, mirror)];
+    let scene = scene_of(objects, vec3(-3.0, 5.0, 1.0));
     let inside = Camera {
-        position: vec3(0.3, 0.0, -4.5),
+        position: ball_center,
         ..Camera::default()
     };
     let inside_frame = frame_of(&scene, &inside);
     // From the centre of the mirror ball every ray meets its inside, never the sky.
-    let sky = bytes(scene.sky);
-    assert!((0..VIEW).all(|y| (0..VIEW).all(|x| rgb(&inside_frame, (x, y)) != sky)));
+    let sky = bytes(SKY);
+    for y in 0..VIEW {
+        for x in 0..VIEW {
+            assert_ne!(rgb(&inside_frame, (x, y)), sky, "pixel {x}, {y}");
+        }
+    }
     // Below the floor, looking up at it: its underside faces away from the light, so an even
-    // square there gets only the ambient light. The demo's first object is its floor.
+    // square there gets only the ambient light.
     let below = Camera {
         position: vec3(0.0, -3.0, 0.0),
         pitch: 1.0,
         yaw: 0.0,
     };
     let below_frame = frame_of(&scene, &below);
-    let (_, floor_material) = scene.objects[0];
-    let even_square = vec3(0.5, -1.0, -1.5);
+    let even_square = vec3(0.5, FLOOR_Y, -1.5);
     let underside_green = rgb(&below_frame, project(&below, even_square))[1];
-    assert_eq!(underside_green, byte(floor_material.color.y * AMBIENT));
+    assert_eq!(underside_green, byte(WHITE.y * AMBIENT));
     let down = Camera {
         pitch: -std::f64::consts::FRAC_PI_2,
         ..Camera::default()
     };
     let down_frame = frame_of(&scene, &down);
-    // Straight down from y = 0 the view is the floor at y = -1: an even and an odd square's centre.
-    for point in [vec3(0.5, -1.0, 0.5), vec3(-0.5, -1.0, 0.5)] {
+    // Straight down from y = 0 the view is the floor: an even and an odd square's centre.
+    for point in [vec3(0.5, FLOOR_Y, 0.5), vec3(-0.5, FLOOR_Y, 0.5)] {
         let green = rgb(&down_frame, project(&down, point))[1];
         assert_eq!(green < ODD_BELOW, odd_square(point), "{point:?}: {green}");
     }
@@ -1108,12 +1141,12 @@ fn a_colour_brighter_than_white_is_clamped_to_255() {
     // centre, shows as 255; unclamped, about 510 would carry its ninth bit into green's byte.
     let center = vec3(0.0, 0.0, -4.0);
     let glowing = vec3(0.0, 0.3, 2.0);
-    let eye = Camera::default();
-    let scene = scene_of(vec![sphere(center, 1.0, matte(glowing))], eye.position);
-    let frame = frame_of(&scene, &eye);
+    let camera = Camera::default();
+    let scene = scene_of(vec![sphere(center, 1.0, matte(glowing))], camera.position);
+    let frame = frame_of(&scene, &camera);
     let facing = center + vec3(0.0, 0.0, 1.0); // the point nearest the eye, N = L
-    let [red, green, blue] = rgb(&frame, project(&eye, facing));
-    let expected_green = byte(glowing.y * lit_share(facing, vec3(0.0, 0.0, 1.0), eye.position));
+    let [red, green, blue] = rgb(&frame, project(&camera, facing));
+    let expected_green = byte(glowing.y * lit_share(facing, vec3(0.0, 0.0, 1.0), camera.position));
     assert_eq!(blue, 255);
     // Green exactly as the test's shading says: N.L at the pixel's centre is within 10^-4 of 1,
     // so 0.3 x 255 = 76.5 rounds down to 76 either way; even, so a carry from blue would show.

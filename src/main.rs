@@ -93,7 +93,7 @@ pub struct Camera {
 }
 
 /// The unit direction `yaw` radians left of -z about +y and `pitch` radians up from level.
-fn direction(yaw: f64, pitch: f64) -> Vec3 {
+fn heading(yaw: f64, pitch: f64) -> Vec3 {
     vec3(
         -yaw.sin() * pitch.cos(),
         pitch.sin(),
@@ -106,16 +106,15 @@ impl Camera {
     /// (0, 0, -1) into right, up and V, so that p0 = C + (-1, -1, 0) becomes C - right - up.
     fn axes(&self) -> (Vec3, Vec3, Vec3) {
         (
-            direction(self.yaw, self.pitch),
-            direction(self.yaw - FRAC_PI_2, 0.0), // a quarter turn right, level
-            direction(self.yaw, self.pitch + FRAC_PI_2), // a quarter turn up
+            heading(self.yaw, self.pitch),
+            heading(self.yaw - FRAC_PI_2, 0.0), // a quarter turn right, level
+            heading(self.yaw, self.pitch + FRAC_PI_2), // a quarter turn up
         )
     }
-    /// Step 4: the primary ray through (x, y), in pixels from the screen's top left: O = E,
-    /// D = p(u, v) - E, u = x / VIEW, v = 1 - y / VIEW.
+    /// Step 4: the primary ray through (x, y), in pixels from the screen's top left, from O = E.
     pub fn primary_ray(&self, x: f64, y: f64) -> Ray {
         let (view, right, up) = self.axes();
-        // C, p0, p1, p2 less E: D = p(u, v) - E then loses nothing to rounding (E + x - E != x).
+        // C, p0, p1, p2 less E: D = p(u, v) - E never adds E to take it away (E + x - E != x).
         let center = view * SCREEN_DISTANCE;
         let p0 = center - right - up;
         let p1 = center + right - up;
@@ -356,10 +355,10 @@ fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
     let map_middle = vec3(0.5, 0.0, 0.5) * VIEW as f64; // in map pixels
     let start = (ray.origin - MAP_CORNER) * MAP_SCALE - map_middle; // p(0) in map pixels
     let distance = start.x.hypot(start.z);
-    // The dot of step s is |distance - s| or more from the map's middle, all of the map within
-    // VIEW / √2 of it: only steps from distance - VIEW to distance + VIEW can be on the map.
-    let first = (distance - VIEW as f64).max(from * pixels_per_t).ceil();
-    let last = (ray.t * pixels_per_t).min(distance + VIEW as f64);
+    // The dot of step s is s - distance or more from the map's middle, all of the map within
+    // VIEW / √2 of it: past step distance + VIEW, a ray (to infinity, say) is off the map for good.
+    let first = (from * pixels_per_t).ceil();
+    let last = (ray.t * pixels_per_t).min(distance + VIEW as f64).floor();
     for step in first as usize..=last as usize {
         plot(frame, ray.at(step as f64 / pixels_per_t), 0, color);
     }
@@ -403,10 +402,11 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
             draw_ray(frame, &ray, 0.0, color);
         }
     }
+    // Through the middle row, v = 0.5, between pixel rows 255 and 256: the assignment's "y = 0".
     let sampled = || {
         (0..VIEW)
             .step_by(SAMPLED_EVERY)
-            .map(|x| camera.primary_ray(x as f64 + 0.5, VIEW as f64 / 2.0)) // v = 0.5: y = 0
+            .map(|x| camera.primary_ray(x as f64 + 0.5, VIEW as f64 / 2.0))
     };
     for mut ray in sampled() {
         let Some(hit) = scene.nearest_hit(&mut ray) else {
@@ -482,8 +482,8 @@ fn main() {
         if fresh(Key::Home) {
             camera = Camera::default();
         }
-        // For a window at rest (1.4% of a core with the X server, not 10%): a frame is rendered and
-        // sent when the camera moved, and sent again each second to repaint a window once covered.
+        // For a window at rest (1.1-1.4% of a core with X; sending each step took 10%), a frame is
+        // rendered and sent when the camera moved, and sent again each second to repaint it.
         let moved = shown != Some(camera);
         if moved {
             render(&scene, &camera, &mut frame);
@@ -493,7 +493,7 @@ fn main() {
             window.update_with_buffer(&frame, WIDTH, VIEW).ok(); // it fails only for a wrong size
             last_sent = Instant::now();
         } else {
-            window.update(); // only reads the keys
+            window.update(); // update_with_buffer less the sending, on X11: events, keys, sleep
         }
     }
 }

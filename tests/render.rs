@@ -335,6 +335,38 @@ fn a_mirror_sphere_reflects_the_checkered_floor_and_the_sky() {
 }
 
 #[test]
+fn a_part_mirror_mixes_its_own_colour_with_what_its_mirror_ray_sees() {
+    // A grey wall z = -5 facing the eye, a quarter mirror, lit from the eye: the pixel at the
+    // centre shows three quarters of the wall's own lit colour and a quarter of what its mirror ray
+    // sees going straight back past the eye: the sky.
+    let reflectivity = 0.25;
+    let grey = vec3(0.6, 0.6, 0.6);
+    let facing_the_eye = vec3(0.0, 0.0, 1.0);
+    let wall = Shape::Plane {
+        normal: facing_the_eye,
+        offset: 5.0, // p.N + d = z + 5 = 0
+    };
+    let part_mirror = Material {
+        color: grey,
+        reflectivity,
+        checkered: false,
+    };
+    let camera = Camera::default();
+    let scene = scene_of(vec![(wall, part_mirror)], camera.position);
+    let frame = frame_of(&scene, &camera);
+    // The centre pixel sees the wall within 0.03 of (0, 0, -5), where N.L is 1 within 10^-4.
+    let lit = lit_share(vec3(0.0, 0.0, -5.0), facing_the_eye, camera.position);
+    let expected = bytes(grey * (lit * (1.0 - reflectivity)) + SKY * reflectivity);
+    let shown = rgb(&frame, (VIEW / 2, VIEW / 2));
+    for (channel, name) in ["red", "green", "blue"].iter().enumerate() {
+        assert!(
+            shown[channel].abs_diff(expected[channel]) <= SHADING_SLACK,
+            "{name}: {shown:?}, not {expected:?}"
+        );
+    }
+}
+
+#[test]
 fn turning_and_moving_the_camera_move_the_image() {
     let ball = vec3(-3.0, 0.0, -1.5);
     let scene = scene_of(vec![sphere(ball, 0.5, matte(RED))], vec3(0.0, 5.0, 0.0));
@@ -413,7 +445,7 @@ fn the_slice_shows_the_camera_the_light_a_sphere_outline_and_the_sampled_rays() 
             "the screen at {x}"
         );
     }
-    for x in [-1.3, 1.3] {
+    for x in [-1.05, 1.05] {
         assert_ne!(
             map_pixel(&frame, x, -1.0),
             CAMERA_COLOR,
@@ -448,9 +480,13 @@ fn the_slice_shows_the_camera_the_light_a_sphere_outline_and_the_sampled_rays() 
         let near = map_near(&frame, vec3(-t, 0.0, -t), 1);
         assert!(near.contains(&MISS_COLOR), "the missing ray at {t}");
     }
-    assert_ne!(map_pixel(&frame, -3.0, -3.0), BACKGROUND);
-    // 0.4 units (16 map pixels) left of the ray, nothing.
-    assert_eq!(map_pixel(&frame, -3.4, -3.0), BACKGROUND);
+    // On that ray at t = 3√2 something, and 0.4 units (16 map pixels) left of it nothing.
+    assert_ne!(
+        map_pixel(&frame, -3.0, -3.0),
+        BACKGROUND,
+        "on the missing ray"
+    );
+    assert_eq!(map_pixel(&frame, -3.4, -3.0), BACKGROUND, "beside the ray");
 }
 
 /// The right half of a frame: the 2D slice.
@@ -468,8 +504,8 @@ fn with_a_level_camera_the_slice_rays_stay_in_the_eyes_plane() {
     // Five chosen poses, one where rounding once sent middle-row rays into the floor 1e16 away,
     // and 40 more spread around the demo: each coordinate steps by its own amount and wraps
     // around its range, so that no two poses repeat.
-    let spread = (0..40).map(|i| {
-        let i = i as f64;
+    let spread = (0..40).map(|step| {
+        let i = f64::from(step);
         let position = vec3(
             (i * 0.37) % 5.0 - 2.5, // x from -2.5 to 2.5
             (i * 0.23) % 3.0 - 0.5, // y from -0.5 to 2.5: always above the floor y = -1
@@ -617,10 +653,12 @@ fn a_pitched_slice_plane_outlines_the_spheres_it_cuts_and_no_others() {
         let (forward, right, up) = camera_axes(&camera);
         let eye = camera.position;
         // Cut: its centre 0.4 above the tilted plane, so the plane cuts it in a circle of
-        // radius sqrt(1 - 0.4²) around the centre's foot on the plane.
-        let cut_center = eye + forward * 5.0 + right * 0.5 + up * 0.4;
-        let foot = cut_center - up * 0.4;
-        let circle = (1.0f64 - 0.4 * 0.4).sqrt();
+        // radius sqrt(r² - 0.4²) around the centre's foot on the plane.
+        let cut_radius: f64 = 1.0;
+        let height = 0.4;
+        let cut_center = eye + forward * 5.0 + right * 0.5 + up * height;
+        let foot = cut_center - up * height;
+        let circle = (cut_radius * cut_radius - height * height).sqrt();
         // Missed: at the eye's height, which a level plane would cut, but 5 |sin pitch| >= 0.99
         // from the tilted plane (level_forward.up = -sin pitch, right.up = 0), further than its
         // radius 0.8.
@@ -628,7 +666,7 @@ fn a_pitched_slice_plane_outlines_the_spheres_it_cuts_and_no_others() {
         let missed_center = eye + level_forward * 5.0 - right * 2.5;
         let scene = scene_of(
             vec![
-                sphere(cut_center, 1.0, matte(PURE_RED)),
+                sphere(cut_center, cut_radius, matte(PURE_RED)),
                 sphere(missed_center, 0.8, matte(PURE_GREEN)),
             ],
             eye - forward * 3.0 + up * 4.0,
@@ -652,7 +690,7 @@ fn a_pitched_slice_plane_outlines_the_spheres_it_cuts_and_no_others() {
         // Each sampled ray that hits the cut sphere hits it on the outline, and its dot is there
         // (9 of the 52 rays in each pose).
         for direction in sampled_directions(&camera) {
-            let Some(hit) = ray_sphere(eye, direction, cut_center, 1.0) else {
+            let Some(hit) = ray_sphere(eye, direction, cut_center, cut_radius) else {
                 continue;
             };
             assert!(
@@ -668,7 +706,11 @@ fn from_far_off_the_map_the_sampled_rays_cross_it_up_to_their_hits() {
     let center = vec3(0.0, 0.0, -5.0);
     // The light straight above the sphere: no hit on the slice plane faces it, so no shadow ray is
     // drawn, and the sphere is matte, so no mirror ray either.
-    let scene = scene_of(vec![sphere(center, 3.0, matte(RED))], vec3(0.0, 20.0, -5.0));
+    let radius = 3.0;
+    let scene = scene_of(
+        vec![sphere(center, radius, matte(RED))],
+        vec3(0.0, 20.0, -5.0),
+    );
     for distance in [20.0, 30.0, 40.0] {
         let camera = Camera {
             position: vec3(0.0, 0.0, distance),
@@ -690,7 +732,7 @@ fn from_far_off_the_map_the_sampled_rays_cross_it_up_to_their_hits() {
             if !within_width(at_z(bottom)) {
                 continue; // it passes beside the map
             }
-            match ray_sphere(camera.position, direction, center, 3.0) {
+            match ray_sphere(camera.position, direction, center, radius) {
                 Some(hit) => {
                     let halfway = at_z((bottom + hit.z) / 2.0);
                     let just_before = at_z(hit.z + 0.3); // 0.3 units before the hit in depth
@@ -715,19 +757,20 @@ fn from_far_off_the_map_the_sampled_rays_cross_it_up_to_their_hits() {
 fn a_blocked_shadow_ray_ends_at_its_blocker() {
     let camera = Camera::default();
     let target = vec3(1.5, 0.0, -6.0);
+    let target_radius = 1.0;
     let light = vec3(-3.0, 0.0, -3.0);
     // The leftmost sampled hit on the target sphere, on its side facing the light to the left, and
     // its shadow ray's segment to the light.
     let hit = sampled_directions(&camera)
         .into_iter()
-        .filter_map(|d| ray_sphere(camera.position, d, target, 1.0))
+        .filter_map(|d| ray_sphere(camera.position, d, target, target_radius))
         .min_by(|a, b| a.x.total_cmp(&b.x))
         .expect("a sampled ray hits the target"); // not a check of the program: of this set-up
     let to_light = (light - hit).normalize();
     // The blocker: a sphere of radius 0.3 half way along that segment.
     let blocker = hit + (light - hit) * 0.5;
     let objects = vec![
-        sphere(target, 1.0, matte(RED)),
+        sphere(target, target_radius, matte(RED)),
         sphere(blocker, 0.3, matte(RED)),
     ];
     let frame = frame_of(&scene_of(objects, light), &camera);
@@ -904,8 +947,8 @@ const DEUTERANOPIA: [[f64; 3]; 3] = [
 ];
 
 /// The sRGB transfer curve's parts (IEC 61966-2-1): linear below the knee, a power above it.
-fn to_linear(byte: f64) -> f64 {
-    let c = byte / 255.0;
+fn to_linear(level: f64) -> f64 {
+    let c = level / 255.0;
     if c <= 0.04045 {
         c / 12.92
     } else {

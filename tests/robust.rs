@@ -51,7 +51,7 @@ const PERFECT_MIRROR_SHARE: f64 = 0.3;
 const CHECKERED_SHARE: f64 = 0.5;
 
 /// A random colour and finish.
-fn material(random: &mut Random) -> Material {
+fn random_material(random: &mut Random) -> Material {
     let color = vec3(random.next(), random.next(), random.next());
     let reflectivity = if random.next() < PERFECT_MIRROR_SHARE {
         1.0
@@ -96,7 +96,7 @@ fn random_scene(random: &mut Random) -> Scene {
                     offset: random.between(-PLANE_SPREAD, PLANE_SPREAD),
                 }
             };
-            (shape, material(random))
+            (shape, random_material(random))
         })
         .collect();
     Scene {
@@ -168,12 +168,11 @@ const ROW_STRIDE: usize = 61;
 
 /// Traces a spread of rays through the screen and checks every colour is a valid one.
 fn assert_valid_rays(scene: &Scene, camera: &Camera, case: &str) {
-    for (x, y) in (0..VIEW)
-        .step_by(COLUMN_STRIDE)
-        .flat_map(|x| (0..VIEW).step_by(ROW_STRIDE).map(move |y| (x, y)))
-    {
-        let color = scene.trace(primary_ray(camera, x, y), 0);
-        assert!(valid(color), "{case}: pixel {x}, {y} is {color:?}");
+    for x in (0..VIEW).step_by(COLUMN_STRIDE) {
+        for y in (0..VIEW).step_by(ROW_STRIDE) {
+            let color = scene.trace(primary_ray(camera, x, y), 0);
+            assert!(valid(color), "{case}: pixel {x}, {y} is {color:?}");
+        }
     }
 }
 
@@ -450,10 +449,11 @@ fn odd_scenes_render_valid_frames() {
 fn a_light_inside_a_sphere_leaves_everything_else_in_shadow() {
     // The light at the centre of a white matte ball: the floor and the ball's outside get only
     // the ambient share, AMBIENT × 1 on a white surface.
-    let lamp = ball(vec3(0.0, 2.0, -3.0), 0.5, white(0.0));
+    let lamp_center = vec3(0.0, 2.0, -3.0);
+    let lamp = ball(lamp_center, 0.5, white(0.0));
     let scene = Scene {
         objects: vec![floor(), lamp],
-        light: vec3(0.0, 2.0, -3.0),
+        light: lamp_center,
         sky: vec3(0.0, 0.0, 0.0),
     };
     let camera = Camera::default();

@@ -328,7 +328,7 @@ pub const CAMERA_COLOR: u32 = 0xff20c0; // pink: the eye and the screen's middle
 pub const RAY_COLOR: u32 = 0xffff00; // yellow: a sampled ray, from the screen to its hit
 pub const MISS_COLOR: u32 = 0x80a0ff; // sky blue: a sampled ray that sees the sky
 pub const LIGHT_COLOR: u32 = 0xff8000; // orange: the light
-pub const SHADOW_COLOR: u32 = 0x802000; // brown: a shadow ray that reaches the light
+pub const SHADOW_COLOR: u32 = 0x802000; // rust: a shadow ray that reaches the light
 pub const BLOCKED_COLOR: u32 = 0x6040a0; // violet: a shadow ray up to what blocks it, a dot there
 pub const MIRROR_COLOR: u32 = 0x008080; // teal: a mirror ray to its hit, a dot there, or the edge
 

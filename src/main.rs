@@ -211,7 +211,7 @@ impl Default for Scene {
 
 // Shading: colour = surface × (ambient + (1 - ambient) N.L where the shadow ray reaches the light),
 // mixed by the reflectivity with the colour the mirror ray R = D - 2(D.N)N brings back.
-pub const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
+const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
 pub const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
 const LIFT: f64 = 1e-6; // a ray leaving a surface starts this far off it, times 1 + |point|
 const ODD_SQUARE: f64 = 0.25; // odd squares are this bright beside the even ones
@@ -353,11 +353,11 @@ fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
         return; // straight up or down: the dot at its start shows it
     }
     let map_middle = vec3(0.5, 0.0, 0.5) * VIEW as f64; // in map pixels
-    let start = (ray.origin - MAP_CORNER) * MAP_SCALE - map_middle; // p(0) in map pixels
+    let start = (ray.origin - MAP_CORNER) * MAP_SCALE - map_middle; // p(0), from the map's middle
     let distance = start.x.hypot(start.z);
-    // The dot of step s is s - distance or more from the map's middle, all of the map within
-    // VIEW / √2 of it: past step distance + VIEW, a ray (to infinity, say) is off the map for good.
-    let first = (from * pixels_per_t).ceil();
+    // The dot of step s is |s - distance| or more from the map's middle, all of the map within
+    // VIEW / √2 of it: only steps from distance - VIEW to distance + VIEW can be on the map.
+    let first = (from * pixels_per_t).max(distance - VIEW as f64).ceil();
     let last = (ray.t * pixels_per_t).min(distance + VIEW as f64).floor();
     for step in first as usize..=last as usize {
         plot(frame, ray.at(step as f64 / pixels_per_t), 0, color);
@@ -406,7 +406,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     let sampled = || {
         (0..VIEW)
             .step_by(SAMPLED_EVERY)
-            .map(|x| camera.primary_ray(x as f64 + 0.5, VIEW as f64 / 2.0))
+            .map(|x| camera.primary_ray(x as f64 + 0.5, VIEW as f64 / 2.0)) // column centres
     };
     for mut ray in sampled() {
         let Some(hit) = scene.nearest_hit(&mut ray) else {
@@ -446,9 +446,10 @@ fn main() {
         WindowOptions::default(),
     )
     .unwrap_or_else(|error| {
-        let hint = match std::env::var_os("DISPLAY") {
-            None => "; DISPLAY is not set",
-            Some(_) => "",
+        let hint = if std::env::var_os("DISPLAY").is_none() {
+            "; DISPLAY is not set"
+        } else {
+            ""
         };
         eprintln!("raytracer: cannot open the window: {error}{hint}");
         std::process::exit(1)
@@ -482,7 +483,7 @@ fn main() {
         if fresh(Key::Home) {
             camera = Camera::default();
         }
-        // For a window at rest (1.1-1.4% of a core with X; sending each step took 10%), a frame is
+        // For a window at rest (about 1.2% of a core with X; sending every step: 10%), a frame is
         // rendered and sent when the camera moved, and sent again each second to repaint it.
         let moved = shown != Some(camera);
         if moved {

@@ -135,6 +135,9 @@ fn primary_ray(camera: &Camera, x: usize, y: usize) -> Ray {
     camera.primary_ray(x as f64 + 0.5, y as f64 + 0.5)
 }
 
+/// The share of the light a surface gets even in shadow, as the README gives it.
+const AMBIENT: f64 = 0.1;
+
 /// How far a channel may round past the bound it is checked against, far more than it can: N.L of
 /// two unit vectors, or a mix of two colours, comes out a few parts in 10^16 off at most.
 const ROUNDING_SLACK: f64 = 1e-9;

@@ -94,11 +94,8 @@ pub struct Camera {
 
 /// The unit direction `yaw` radians left of -z about +y and `pitch` radians up from level.
 fn heading(yaw: f64, pitch: f64) -> Vec3 {
-    vec3(
-        -yaw.sin() * pitch.cos(),
-        pitch.sin(),
-        -yaw.cos() * pitch.cos(),
-    )
+    let level = pitch.cos(); // the length of its level part
+    vec3(-yaw.sin() * level, pitch.sin(), -yaw.cos() * level)
 }
 
 impl Camera {
@@ -126,9 +123,9 @@ impl Camera {
     }
 }
 
-// Step 3, primitives: the sphere (p - C).(p - C) = r² and the plane p.N + d = 0, with materials.
-#[derive(Clone, Copy)]
-pub enum Shape {
+// Step 3, the slide's Primitive class with its Sphere and Plane subclasses: in Rust an enum, a
+// variant for each subclass. The sphere is (p - C).(p - C) = r², the plane p.N + d = 0.
+pub enum Primitive {
     Sphere { center: Vec3, radius: f64 },
     Plane { normal: Vec3, offset: f64 }, // N normalized, d = offset
 }
@@ -140,13 +137,13 @@ pub struct Material {
     pub checkered: bool,   // the checkerboard of unit squares on the floor
 }
 
-impl Shape {
+impl Primitive {
     /// Step 5: the distance t of the ray's first hit with 0 < t < ray.t, if any.
     pub fn intersect(&self, ray: &Ray) -> Option<f64> {
         let ahead = |t: f64| (t > 0.0 && t < ray.t).then_some(t);
         match *self {
             // t = -(O.N + d) / (D.N); a ray parallel to the plane (D.N = 0) misses it.
-            Shape::Plane { normal, offset } => {
+            Primitive::Plane { normal, offset } => {
                 let slant = ray.direction.dot(normal);
                 if slant == 0.0 {
                     return None;
@@ -156,7 +153,7 @@ impl Shape {
             // The slide's test: c = C - O, t = c.D, q = c - tD, p² = q.q; hits at t -/+
             // sqrt(r² - p²), the far one from inside. Touching (p² = r²) misses, unlike the slide's
             // p² > r², so that a radius-0 sphere is never hit (its normal would be 0 / 0).
-            Shape::Sphere { center, radius } => {
+            Primitive::Sphere { center, radius } => {
                 let c = center - ray.origin;
                 let t = c.dot(ray.direction);
                 let q = c - ray.direction * t;
@@ -173,7 +170,7 @@ impl Shape {
 
 // The scene: the objects, one point light and a flat sky.
 pub struct Scene {
-    pub objects: Vec<(Shape, Material)>,
+    pub objects: Vec<(Primitive, Material)>,
     pub light: Vec3,
     pub sky: Vec3,
 }
@@ -186,20 +183,21 @@ impl Default for Scene {
             checkered,
         };
         let ball = |center, radius, color, reflectivity| {
-            let sphere = Shape::Sphere { center, radius };
+            let sphere = Primitive::Sphere { center, radius };
             (sphere, material(color, reflectivity, false))
         };
-        let floor = Shape::Plane {
+        let floor = Primitive::Plane {
             normal: vec3(0.0, 1.0, 0.0),
             offset: 1.0, // p.N + d = y + 1 = 0: the floor is y = -1
         };
         let white = vec3(0.9, 0.9, 0.9);
+        // A ball is its centre, radius, colour and reflectivity (0 matte, 1 a perfect mirror).
         let objects = vec![
-            (floor, material(white, 0.0, true)),
-            ball(vec3(0.3, 0.0, -4.5), 1.0, white, 0.85), // the mirror ball
-            ball(vec3(-2.0, -0.2, -4.2), 0.8, vec3(0.9, 0.2, 0.2), 0.0), // red
-            ball(vec3(1.9, -0.4, -3.4), 0.6, vec3(0.2, 0.8, 0.3), 0.0), // green
-            ball(vec3(-0.9, -0.45, -2.6), 0.55, vec3(0.2, 0.4, 0.9), 0.0), // blue
+            (floor, material(white, 0.0, true)), // white, matte (reflectivity 0), checkered
+            ball(vec3(0.3, 0.0, -4.5), 1.0, white, 0.85), // radius 1, white, reflectivity 0.85
+            ball(vec3(-2.0, -0.2, -4.2), 0.8, vec3(0.9, 0.2, 0.2), 0.0), // radius 0.8, red, matte
+            ball(vec3(1.9, -0.4, -3.4), 0.6, vec3(0.2, 0.8, 0.3), 0.0), // radius 0.6, green, matte
+            ball(vec3(-0.9, -0.45, -2.6), 0.55, vec3(0.2, 0.4, 0.9), 0.0), // 0.55, blue, matte
         ];
         Scene {
             objects,
@@ -212,7 +210,7 @@ impl Default for Scene {
 // Shading: colour = surface × (ambient + (1 - ambient) N.L where the shadow ray reaches the light),
 // mixed by the reflectivity with the colour the mirror ray R = D - 2(D.N)N brings back.
 const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
-pub const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
+const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
 const LIFT: f64 = 1e-6; // a ray leaving a surface starts this far off it, times 1 + |point|
 const ODD_SQUARE: f64 = 0.25; // odd squares are this bright beside the even ones
 
@@ -239,17 +237,17 @@ impl Scene {
     /// Step 6, the nearest intersection: each object that the ray hits before ray.t shortens it.
     fn nearest_hit(&self, ray: &mut Ray) -> Option<Hit> {
         let mut nearest = None;
-        for (shape, material) in &self.objects {
-            if let Some(t) = shape.intersect(ray) {
+        for (primitive, material) in &self.objects {
+            if let Some(t) = primitive.intersect(ray) {
                 ray.t = t;
-                nearest = Some((shape, material));
+                nearest = Some((primitive, material));
             }
         }
-        let (shape, material) = nearest?;
+        let (primitive, material) = nearest?;
         let point = ray.at(ray.t);
-        let outward = match *shape {
-            Shape::Sphere { center, .. } => (point - center).normalize(),
-            Shape::Plane { normal, .. } => normal,
+        let outward = match *primitive {
+            Primitive::Sphere { center, .. } => (point - center).normalize(),
+            Primitive::Plane { normal, .. } => normal,
         };
         let facing = outward.dot(ray.direction) < 0.0; // two-sided: N faces the ray
         let normal = if facing { outward } else { -outward };
@@ -316,13 +314,14 @@ fn to_rgb(color: Vec3) -> u32 {
 // The 2D slice, the assignment's "for y = 0, visualize every 10th ray", seen from above (x to the
 // right, -z up): the plane of the screen's middle row, through the eye along V and right. It is
 // y = 0 in the start pose and tilts with the camera, so that the sampled rays always lie in it.
-pub const MAP_CORNER: Vec3 = vec3(-6.4, 0.0, -9.4); // top left x and z: 12.8 units around the demo
-pub const MAP_SCALE: f64 = 40.0; // map pixels per world unit
+pub const MAP_CORNER: Vec3 = vec3(-6.4, 0.0, -9.4); // the map's top left x and z
+const MAP_SIDE: f64 = 12.8; // the map shows 12.8 x 12.8 units around the demo, at any VIEW
+pub const MAP_SCALE: f64 = VIEW as f64 / MAP_SIDE; // map pixels per world unit
 const SAMPLED_EVERY: usize = 10; // the assignment's "every 10th ray"
 const DOT_RADIUS: i32 = 1; // a hit's dot is 3 x 3 map pixels: 1 either side of its point
 const MARKER_RADIUS: i32 = 3; // the light and the eye are 7 x 7
 const OUTLINE_CHORDS: usize = 256; // R(1 - cos(π/256)) < 1/2 map pixel up to R = 6,600 of them
-// Colours 64+ apart in RGB from each other and the balls', also to red-green colour-blind eyes.
+// Colours 64+ apart in RGB from each other, also to red-green colour-blind eyes.
 pub const BACKGROUND: u32 = 0x000000; // black
 pub const CAMERA_COLOR: u32 = 0xff20c0; // pink: the eye and the screen's middle row
 pub const RAY_COLOR: u32 = 0xffff00; // yellow: a sampled ray, from the screen to its hit
@@ -352,11 +351,11 @@ fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
     if pixels_per_t == 0.0 {
         return; // straight up or down: the dot at its start shows it
     }
-    let map_middle = vec3(0.5, 0.0, 0.5) * VIEW as f64; // in map pixels
-    let start = (ray.origin - MAP_CORNER) * MAP_SCALE - map_middle; // p(0), from the map's middle
-    let distance = start.x.hypot(start.z);
-    // The dot of step s is |s - distance| or more from the map's middle, all of the map within
-    // VIEW / √2 of it: only steps from distance - VIEW to distance + VIEW can be on the map.
+    let start = ray.origin - MAP_CORNER - vec3(0.5, 0.0, 0.5) * MAP_SIDE; // from the map's middle
+    let distance = start.x.hypot(start.z) * MAP_SCALE; // p(0)'s, in map pixels
+    // Step s's dot is |s - distance| or more from the map's middle, all of the map within VIEW / √2
+    // of it: only steps within VIEW of distance can be on it. The last bound ends a ray to infinity,
+    // the first spares a far eye's frame the steps before the map (27 ms, not 364, 10^4 units out).
     let first = (from * pixels_per_t).max(distance - VIEW as f64).ceil();
     let last = (ray.t * pixels_per_t).min(distance + VIEW as f64).floor();
     for step in first as usize..=last as usize {
@@ -381,28 +380,32 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     }
     let (view, right, up) = camera.axes(); // the slice holds V and right; up is its normal
     let eye = camera.position;
-    for (shape, material) in &scene.objects {
-        // The slice cuts a sphere in a circle around C - hN of radius √(r² - h²), h = (C - E).N.
-        let Shape::Sphere { center, radius } = *shape else {
-            continue;
-        };
-        let height = (center - eye).dot(up);
-        if height.abs() >= radius {
-            continue;
-        }
-        let circle_radius = (radius * radius - height * height).sqrt();
-        let around = |i: usize| {
-            let angle = TAU * i as f64 / OUTLINE_CHORDS as f64;
-            center - up * height + (right * angle.cos() + view * angle.sin()) * circle_radius
-        };
-        let color = to_rgb(material.color);
-        for i in 0..OUTLINE_CHORDS {
-            let chord = around(i + 1) - around(i);
-            let ray = Ray::new(around(i), chord, chord.length());
-            draw_ray(frame, &ray, 0.0, color);
+    for (primitive, material) in &scene.objects {
+        match *primitive {
+            // The slice cuts a sphere in a circle around C - hN of radius √(r² - h²), h = (C - E).N.
+            Primitive::Sphere { center, radius } => {
+                let height = (center - eye).dot(up);
+                if height.abs() >= radius {
+                    continue;
+                }
+                let circle_radius = (radius * radius - height * height).sqrt();
+                let around = |i: usize| {
+                    let angle = TAU * i as f64 / OUTLINE_CHORDS as f64;
+                    center - up * height
+                        + (right * angle.cos() + view * angle.sin()) * circle_radius
+                };
+                for i in 0..OUTLINE_CHORDS {
+                    let chord = around(i + 1) - around(i);
+                    let ray = Ray::new(around(i), chord, chord.length());
+                    draw_ray(frame, &ray, 0.0, to_rgb(material.color));
+                }
+            }
+            // A plane is not drawn: the slice cuts it in a line across the whole map, or not at
+            // all, and the sampled rays' dots show where they meet it.
+            Primitive::Plane { .. } => {}
         }
     }
-    // Through the middle row, v = 0.5, between pixel rows 255 and 256: the assignment's "y = 0".
+    // Through the middle row, v = 0.5, between the two middle pixel rows: the assignment's "y = 0".
     let sampled = || {
         (0..VIEW)
             .step_by(SAMPLED_EVERY)
@@ -427,74 +430,82 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     }
     let row_start = eye + view * SCREEN_DISTANCE - right; // the screen's middle row: C - right
     draw_ray(frame, &Ray::new(row_start, right, 2.0), 0.0, CAMERA_COLOR); // to C + right
-    plot(frame, scene.light, MARKER_RADIUS, LIGHT_COLOR);
-    // Off the map, the eye's marker stands on the map's edge nearest to it: x, z snapped onto it.
-    let snap = |w: f64, corner: f64| w.clamp(corner, corner + (VIEW - 1) as f64 / MAP_SCALE);
-    let marker = vec3(snap(eye.x, MAP_CORNER.x), 0.0, snap(eye.z, MAP_CORNER.z));
-    plot(frame, marker, MARKER_RADIUS, CAMERA_COLOR);
+    // The light's marker, then the eye's; off the map, each whole on the edge nearest to it.
+    let inset = (f64::from(MARKER_RADIUS) + 0.5) / MAP_SCALE; // to its middle pixel's middle
+    let snap = |w: f64, corner: f64| w.clamp(corner + inset, corner + MAP_SIDE - inset);
+    for (point, color) in [(scene.light, LIGHT_COLOR), (eye, CAMERA_COLOR)] {
+        let middle = vec3(
+            snap(point.x, MAP_CORNER.x),
+            0.0,
+            snap(point.z, MAP_CORNER.z),
+        );
+        plot(frame, middle, MARKER_RADIUS, color);
+    }
 }
 
-// Step 7, the program: a window whose keys move and turn the camera.
-const MOVE_SPEED: f64 = 2.0; // units a second along each key's direction
+// Step 7, the controls: each step of the loop reads the keys, moves the camera, renders the frame
+// and shows it. The window's own mechanics sit below the loop, each in a function that says why.
+const MOVE_SPEED: f64 = 2.0; // units a second along each held key's direction
 const TURN_SPEED: f64 = 1.5; // radians a second
 
+/// The camera `dt` seconds on with `keys` down, each pair of keys an axis; Home: back to the start.
+pub fn moved(mut camera: Camera, keys: &[Key], dt: f64) -> Camera {
+    use Key::*; // W, S, A, D, R, F, Up, Down, Left, Right and Home, each without Key::
+    if keys.contains(&Home) {
+        return Camera::default();
+    }
+    let down = |key| if keys.contains(&key) { 1.0 } else { 0.0 };
+    let axis = |plus, minus| down(plus) - down(minus); // 1, -1, or 0 with both or neither down
+    let (view, right, _) = camera.axes();
+    let motion = view * axis(W, S) + right * axis(D, A);
+    let rise = vec3(0.0, axis(R, F), 0.0);
+    camera.position = camera.position + (motion + rise) * (MOVE_SPEED * dt);
+    camera.yaw += TURN_SPEED * dt * axis(Left, Right);
+    let pitch = camera.pitch + TURN_SPEED * dt * axis(Up, Down);
+    camera.pitch = pitch.clamp(-FRAC_PI_2, FRAC_PI_2); // straight up or down at most
+    camera
+}
+
 fn main() {
-    let mut window = Window::new(
-        "raytracer - W A S D R F move, arrows turn, Home: back to the start, Esc quits",
-        WIDTH,
-        VIEW,
-        WindowOptions::default(),
-    )
-    .unwrap_or_else(|error| {
-        let hint = if std::env::var_os("DISPLAY").is_none() {
-            "; DISPLAY is not set"
-        } else {
-            ""
-        };
-        eprintln!("raytracer: cannot open the window: {error}{hint}");
-        std::process::exit(1)
-    });
-    window.set_target_fps(60); // the keys are read 60 times a second: it sleeps for the rest
+    let title = "raytracer - W A S D R F move, arrows turn, Home: back to the start, Esc quits";
+    let mut window =
+        Window::new(title, WIDTH, VIEW, WindowOptions::default()).unwrap_or_else(|error| {
+            // No window, most often for want of an X server: one line on why, and exit status 1.
+            let unset = std::env::var_os("DISPLAY").is_none();
+            let hint = if unset { ", as DISPLAY is not set" } else { "" };
+            eprintln!("raytracer: {error}{hint}");
+            std::process::exit(1)
+        });
+    window.set_target_fps(60); // at most 60 steps a second: it sleeps for the rest of each
     let scene = Scene::default();
     let mut camera = Camera::default();
-    let mut shown = None; // the camera of the frame on screen
     let mut frame = vec![BACKGROUND; WIDTH * VIEW];
+    let mut shown = None; // the camera whose frame is on screen
+    let mut stale = Vec::new(); // see keys_down
     let mut last_step = Instant::now();
-    let mut last_sent = Instant::now();
-    let mut stale = Vec::new(); // keys down while the window lacked the focus, not yet let go
     while window.is_open() && !window.is_key_down(Key::Escape) {
-        let dt = last_step.elapsed().as_secs_f64();
+        let keys = keys_down(&window, &mut stale);
+        camera = moved(camera, &keys, last_step.elapsed().as_secs_f64());
         last_step = Instant::now();
-        // X11 tells no window of a key let go while it lacks the focus, so such a key stays down.
-        if !window.is_active() {
-            stale = window.get_keys();
+        if shown == Some(camera) {
+            // A window at rest: idle, the program and X took 1% of a core, not 10% sending frames.
+            window.update(); // reads the keys and waits out the step, sending no frame
+            continue;
         }
-        stale.retain(|&key| window.is_key_down(key));
-        let fresh = |key| window.is_key_down(key) && !stale.contains(&key);
-        let held = |key| if fresh(key) { dt } else { 0.0 };
-        let (view, right, _) = camera.axes();
-        let forward = view * (held(Key::W) - held(Key::S));
-        let sideways = right * (held(Key::D) - held(Key::A));
-        let rise = vec3(0.0, held(Key::R) - held(Key::F), 0.0);
-        camera.position = camera.position + (forward + sideways + rise) * MOVE_SPEED;
-        camera.yaw += TURN_SPEED * (held(Key::Left) - held(Key::Right));
-        camera.pitch += TURN_SPEED * (held(Key::Up) - held(Key::Down));
-        camera.pitch = camera.pitch.clamp(-FRAC_PI_2, FRAC_PI_2); // straight up at most, never over
-        if fresh(Key::Home) {
-            camera = Camera::default();
-        }
-        // For a window at rest (about 1.2% of a core with X; sending every step: 10%), a frame is
-        // rendered and sent when the camera moved, and sent again each second to repaint it.
-        let moved = shown != Some(camera);
-        if moved {
-            render(&scene, &camera, &mut frame);
-            shown = Some(camera);
-        }
-        if moved || last_sent.elapsed().as_secs() >= 1 {
-            window.update_with_buffer(&frame, WIDTH, VIEW).ok(); // it fails only for a wrong size
-            last_sent = Instant::now();
-        } else {
-            window.update(); // update_with_buffer less the sending, on X11: events, keys, sleep
-        }
+        render(&scene, &camera, &mut frame);
+        window.update_with_buffer(&frame, WIDTH, VIEW).ok(); // fails only for a wrong size
+        shown = Some(camera);
     }
+}
+
+/// The keys down, less any that was down while the window lacked the focus and has not been let go
+/// since: X tells no window of a key let go elsewhere, so such a key would stay down for good.
+fn keys_down(window: &Window, stale: &mut Vec<Key>) -> Vec<Key> {
+    let mut keys = window.get_keys();
+    if !window.is_active() {
+        *stale = keys.clone();
+    }
+    stale.retain(|key| keys.contains(key));
+    keys.retain(|key| !stale.contains(key));
+    keys
 }

@@ -1,0 +1,186 @@
+//! Step 7, the controls: what each key does to the camera in a step of the window's loop, and the
+//! one line the program says when it can open no window.
+#[allow(dead_code)]
+#[path = "../src/main.rs"]
+mod raytracer;
+#[allow(dead_code)]
+#[path = "support/scenes.rs"]
+mod scenes;
+
+use minifb::Key;
+use raytracer::*;
+use scenes::*;
+use std::f64::consts::FRAC_PI_2;
+use std::process::Command;
+
+/// How fast the camera moves and turns, as the README gives it.
+const MOVE_SPEED: f64 = 2.0; // units a second along each held key's direction
+const TURN_SPEED: f64 = 1.5; // radians a second
+
+/// A camera away from the start, turned and tilted, so that each direction is a different one.
+fn somewhere() -> Camera {
+    camera_at(vec3(1.0, 0.5, -2.0), 0.7, -0.4)
+}
+
+/// A step of a tenth of a second.
+const DT: f64 = 0.1;
+
+/// Are two points the same, give or take rounding?
+fn same(a: Vec3, b: Vec3) -> bool {
+    (a - b).length() < 1e-9
+}
+
+#[test]
+fn w_and_s_move_forward_and_back_along_the_view() {
+    let camera = somewhere();
+    let (view, ..) = camera_axes(&camera);
+    for (keys, sign) in [([Key::W], 1.0), ([Key::S], -1.0)] {
+        let expected = camera.position + view * (sign * MOVE_SPEED * DT);
+        let moved = moved(camera, &keys, DT);
+        assert!(
+            same(moved.position, expected),
+            "{keys:?} for {DT} s should move the eye to {expected:?}, not {:?}",
+            moved.position
+        );
+    }
+}
+
+#[test]
+fn a_and_d_move_left_and_right_level() {
+    let camera = somewhere();
+    let (_, right, _) = camera_axes(&camera);
+    for (keys, sign) in [([Key::D], 1.0), ([Key::A], -1.0)] {
+        let expected = camera.position + right * (sign * MOVE_SPEED * DT);
+        let moved = moved(camera, &keys, DT);
+        assert!(
+            same(moved.position, expected),
+            "{keys:?} for {DT} s should move the eye to {expected:?}, not {:?}",
+            moved.position
+        );
+    }
+}
+
+#[test]
+fn r_and_f_move_straight_up_and_down() {
+    let camera = somewhere();
+    for (keys, sign) in [([Key::R], 1.0), ([Key::F], -1.0)] {
+        let expected = camera.position + vec3(0.0, sign * MOVE_SPEED * DT, 0.0);
+        let moved = moved(camera, &keys, DT);
+        assert!(
+            same(moved.position, expected),
+            "{keys:?} for {DT} s should move the eye to {expected:?}, not {:?}",
+            moved.position
+        );
+    }
+}
+
+#[test]
+fn the_arrows_turn_left_and_right_and_tilt_up_and_down() {
+    let camera = somewhere();
+    let turn = TURN_SPEED * DT;
+    let cases = [
+        (Key::Left, camera.yaw + turn, camera.pitch),
+        (Key::Right, camera.yaw - turn, camera.pitch),
+        (Key::Up, camera.yaw, camera.pitch + turn),
+        (Key::Down, camera.yaw, camera.pitch - turn),
+    ];
+    for (key, yaw, pitch) in cases {
+        let moved = moved(camera, &[key], DT);
+        assert!(
+            (moved.yaw - yaw).abs() < 1e-12 && (moved.pitch - pitch).abs() < 1e-12,
+            "{key:?} for {DT} s should turn the camera to yaw {yaw:.3}, pitch {pitch:.3}, not \
+             yaw {:.3}, pitch {:.3}",
+            moved.yaw,
+            moved.pitch
+        );
+        assert_eq!(
+            moved.position, camera.position,
+            "{key:?} should not move the eye"
+        );
+    }
+}
+
+#[test]
+fn a_pair_of_opposite_keys_held_together_cancel_out() {
+    let camera = somewhere();
+    for keys in [
+        [Key::W, Key::S],
+        [Key::A, Key::D],
+        [Key::R, Key::F],
+        [Key::Left, Key::Right],
+    ] {
+        assert_eq!(
+            moved(camera, &keys, DT),
+            camera,
+            "{keys:?} held together moved the camera"
+        );
+    }
+}
+
+#[test]
+fn tilting_stops_at_straight_up_and_straight_down() {
+    let up = moved(somewhere(), &[Key::Up], 10.0);
+    assert_eq!(
+        up.pitch, FRAC_PI_2,
+        "held up for 10 s, the camera should look straight up"
+    );
+    let down = moved(somewhere(), &[Key::Down], 10.0);
+    assert_eq!(
+        down.pitch, -FRAC_PI_2,
+        "held down for 10 s, it should look straight down"
+    );
+}
+
+#[test]
+fn home_puts_the_camera_back_at_the_start() {
+    let home = moved(somewhere(), &[Key::Home, Key::W], DT);
+    assert_eq!(
+        home,
+        Camera::default(),
+        "Home should put the camera back at the start"
+    );
+}
+
+/// Runs the built program with DISPLAY set to `display`, or unset, and returns its exit status
+/// and what it wrote to stderr.
+fn run(display: Option<&str>) -> (Option<i32>, String) {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_raytracer"));
+    command.env_remove("WAYLAND_DISPLAY");
+    match display {
+        Some(display) => command.env("DISPLAY", display),
+        None => command.env_remove("DISPLAY"),
+    };
+    let output = command
+        .output()
+        .expect("the test could not start the built program");
+    let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
+    (output.status.code(), stderr)
+}
+
+#[test]
+fn without_a_display_it_says_why_in_one_line() {
+    let hint = "DISPLAY is not set";
+    let (status, stderr) = run(None);
+    assert_eq!(
+        status,
+        Some(1),
+        "with no DISPLAY the exit status should be 1: {stderr}"
+    );
+    assert_eq!(stderr.lines().count(), 1, "one line, not: {stderr}");
+    assert!(
+        stderr.contains(hint),
+        "the line should say that {hint}: {stderr}"
+    );
+    // DISPLAY set, to a display no X server serves: one line, without that hint.
+    let (status, stderr) = run(Some(":4711"));
+    assert_eq!(
+        status,
+        Some(1),
+        "with no X server the exit status should be 1: {stderr}"
+    );
+    assert_eq!(stderr.lines().count(), 1, "one line, not: {stderr}");
+    assert!(
+        !stderr.contains(hint),
+        "DISPLAY is set, yet the line says it is not: {stderr}"
+    );
+}

@@ -1,0 +1,161 @@
+//! The tests' own scenes and geometry. Each expectation is worked out here from the slides'
+//! formulas (the camera's screen, the ray-sphere quadratic, N.L), not by calling `src/main.rs`.
+use crate::raytracer::*;
+
+/// The figures the README gives, which the tests hold the program to.
+pub const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
+pub const SCREEN_DISTANCE: f64 = 1.0; // the screen is 1 ahead of the eye, 2 wide and 2 high
+
+pub const SKY: Vec3 = vec3(0.4, 0.6, 1.0);
+pub const WHITE: Vec3 = vec3(1.0, 1.0, 1.0);
+pub const RED: Vec3 = vec3(0.9, 0.1, 0.1);
+pub const PURE_RED: Vec3 = vec3(1.0, 0.0, 0.0); // its outline on the map is exactly 0xff0000
+pub const PURE_GREEN: Vec3 = vec3(0.0, 1.0, 0.0);
+pub const FLOOR_Y: f64 = -1.0;
+pub const HALF_VIEW: f64 = VIEW as f64 / 2.0; // the screen's middle, in pixels from an edge
+
+pub fn matte(color: Vec3) -> Material {
+    mirror(color, 0.0)
+}
+
+/// A surface that reflects `reflectivity` of what its mirror ray brings back.
+pub fn mirror(color: Vec3, reflectivity: f64) -> Material {
+    Material {
+        color,
+        reflectivity,
+        checkered: false,
+    }
+}
+
+pub fn sphere(center: Vec3, radius: f64, material: Material) -> (Primitive, Material) {
+    (Primitive::Sphere { center, radius }, material)
+}
+
+/// A white checkered floor y = FLOOR_Y: the plane p.N + d = 0 with N = (0, 1, 0), d = -FLOOR_Y.
+pub fn checkered_floor() -> (Primitive, Material) {
+    let floor = Primitive::Plane {
+        normal: vec3(0.0, 1.0, 0.0),
+        offset: -FLOOR_Y,
+    };
+    let checkered = Material {
+        checkered: true,
+        ..matte(WHITE)
+    };
+    (floor, checkered)
+}
+
+pub fn scene_of(objects: Vec<(Primitive, Material)>, light: Vec3) -> Scene {
+    Scene {
+        objects,
+        light,
+        sky: SKY,
+    }
+}
+
+/// A camera at `position` turned `yaw` radians left and tilted `pitch` radians up.
+pub fn camera_at(position: Vec3, yaw: f64, pitch: f64) -> Camera {
+    Camera {
+        position,
+        yaw,
+        pitch,
+    }
+}
+
+pub fn frame_of(scene: &Scene, camera: &Camera) -> Vec<u32> {
+    let mut frame = vec![0; WIDTH * VIEW];
+    render(scene, camera, &mut frame);
+    frame
+}
+
+/// The 3D view's pixel (x, y) as [red, green, blue] bytes.
+pub fn rgb(frame: &[u32], (x, y): (usize, usize)) -> [u32; 3] {
+    let pixel = frame[y * WIDTH + x];
+    [pixel >> 16 & 255, pixel >> 8 & 255, pixel & 255]
+}
+
+/// A colour channel from 0 to 1 as a byte from 0 to 255, as the window shows it.
+pub fn byte(channel: f64) -> u32 {
+    (channel * 255.0) as u32
+}
+
+pub fn bytes(color: Vec3) -> [u32; 3] {
+    [byte(color.x), byte(color.y), byte(color.z)]
+}
+
+/// A colour as a 0RGB pixel, as the map draws a ball's outline.
+pub fn pixel_of(color: Vec3) -> u32 {
+    let [red, green, blue] = bytes(color);
+    red << 16 | green << 8 | blue
+}
+
+/// The README's shading: ambient + (1 - ambient) N.L, where N.L <= 0 (the light behind the
+/// surface) adds nothing.
+pub fn lit_share(point: Vec3, normal: Vec3, light: Vec3) -> f64 {
+    let n_dot_l = normal.dot((light - point).normalize());
+    AMBIENT + (1.0 - AMBIENT) * n_dot_l.max(0.0)
+}
+
+fn cross(a: Vec3, b: Vec3) -> Vec3 {
+    vec3(
+        a.y * b.z - a.z * b.y,
+        a.z * b.x - a.x * b.z,
+        a.x * b.y - a.y * b.x,
+    )
+}
+
+/// The camera's view, right and up directions: it looks along
+/// (-sin yaw cos pitch, sin pitch, -cos yaw cos pitch), right is level, up is right x view.
+pub fn camera_axes(camera: &Camera) -> (Vec3, Vec3, Vec3) {
+    let Camera { yaw, pitch, .. } = *camera;
+    let view = vec3(
+        -yaw.sin() * pitch.cos(),
+        pitch.sin(),
+        -yaw.cos() * pitch.cos(),
+    );
+    let right = vec3(yaw.cos(), 0.0, -yaw.sin());
+    (view, right, cross(right, view))
+}
+
+/// The 3D view's pixel that shows a world point: the slide's screen, d ahead, 2 wide and 2 high.
+pub fn project(camera: &Camera, point: Vec3) -> (usize, usize) {
+    let (view, right, up) = camera_axes(camera);
+    let d = point - camera.position;
+    let ahead = d.dot(view) / SCREEN_DISTANCE;
+    let across = d.dot(right) / ahead; // from -1 at the left edge to 1 at the right
+    let upward = d.dot(up) / ahead; // from -1 at the bottom to 1 at the top
+    assert!(
+        ahead > 0.0 && across.abs() < 1.0 && upward.abs() < 1.0,
+        "the test is wrong, not the program: {point:?} is off the screen"
+    );
+    let column = (across + 1.0) * HALF_VIEW;
+    let row = (1.0 - upward) * HALF_VIEW;
+    (column as usize, row as usize)
+}
+
+/// Where a ray O + tD from outside a sphere first meets it, by the quadratic |O + tD - C|² = r²:
+/// the near root, if it is in front.
+pub fn ray_sphere(origin: Vec3, direction: Vec3, center: Vec3, radius: f64) -> Option<Vec3> {
+    let d = direction.normalize();
+    let oc = origin - center;
+    let half_b = oc.dot(d);
+    let discriminant = half_b * half_b - (oc.dot(oc) - radius * radius);
+    if discriminant < 0.0 {
+        return None; // the line passes the sphere by
+    }
+    let t = -half_b - discriminant.sqrt();
+    (t > 0.0).then(|| origin + d * t)
+}
+
+/// The map's sampled rays: through every 10th column's centre on the screen's middle row.
+pub fn sampled_directions(camera: &Camera) -> Vec<Vec3> {
+    let (view, right, _) = camera_axes(camera);
+    (0..VIEW)
+        .step_by(10)
+        .map(|x| view * SCREEN_DISTANCE + right * ((x as f64 + 0.5) / HALF_VIEW - 1.0))
+        .collect()
+}
+
+/// The slide's checkerboard F, with floor: is the floor square under this point an odd one?
+pub fn odd_square(point: Vec3) -> bool {
+    (point.x.floor() as i64 + point.z.floor() as i64) & 1 == 1
+}

@@ -1,0 +1,466 @@
+//! The 3D view, the lecture's steps 1 to 9: camera, intersections, shading, shadows, the
+//! checkerboard and reflections, each checked on a pixel that the test works out itself.
+#[allow(dead_code)]
+#[path = "../src/main.rs"]
+mod raytracer;
+#[allow(dead_code)]
+#[path = "support/scenes.rs"]
+mod scenes;
+
+use raytracer::*;
+use scenes::*;
+use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2};
+
+/// A pixel counts as red where its red byte is over this many times its green and its blue: a
+/// RED ball shows 9 times, however lit; the sky and the floor never more than once.
+const RED_OVER: u32 = 2;
+
+fn is_red([r, g, b]: [u32; 3]) -> bool {
+    r > RED_OVER * g && r > RED_OVER * b
+}
+
+/// A floor square's green byte is under this where the square is odd: odd squares show at most a
+/// quarter of 255 (63), and the even ones these tests look at, lit from high up, 125 or more.
+const ODD_BELOW: u32 = 100;
+
+/// A pixel's centre sees a point up to half a pixel from the one the test projects, where N.L
+/// differs by up to about 0.01 on these surfaces: 3 of 255 levels.
+const SHADING_SLACK: u32 = 3;
+
+#[test]
+fn pixels_that_hit_nothing_show_the_sky() {
+    let ball = vec3(0.0, 0.0, -4.0);
+    let scene = scene_of(vec![sphere(ball, 1.0, matte(RED))], vec3(0.0, 5.0, 0.0));
+    let camera = Camera::default();
+    let frame = frame_of(&scene, &camera);
+    let last = VIEW - 1;
+    let above_the_ball = project(&camera, ball + vec3(0.0, 2.0, 0.0));
+    for pixel in [(0, 0), (last, 0), (0, last), (last, last), above_the_ball] {
+        let seen = rgb(&frame, pixel);
+        assert_eq!(seen, bytes(SKY), "pixel {pixel:?} should show the sky");
+    }
+}
+
+#[test]
+fn a_sphere_covers_its_projected_centre_and_ends_at_its_silhouette() {
+    let center = vec3(1.0, 0.5, -5.0);
+    let radius = 1.0;
+    let scene = scene_of(
+        vec![sphere(center, radius, matte(RED))],
+        vec3(0.0, 0.0, 0.0),
+    );
+    let camera = Camera::default();
+    let frame = frame_of(&scene, &camera);
+    let middle = rgb(&frame, project(&camera, center));
+    assert!(
+        is_red(middle),
+        "the sphere's centre shows {middle:?}, not the red sphere"
+    );
+    // Seen from the eye the sphere fills a cone of half-angle asin(r / distance): 0.02 radians
+    // (5 pixels) past it, beside the sphere, is sky.
+    let distance = center.length();
+    let past = (radius / distance).asin() + 0.02;
+    let toward = center.normalize();
+    let beside = vec3(toward.z, 0.0, -toward.x).normalize(); // level, at right angles to `toward`
+    let outside = (toward * past.cos() + beside * past.sin()) * distance;
+    let seen = rgb(&frame, project(&camera, outside));
+    assert_eq!(seen, bytes(SKY), "just past the silhouette should be sky");
+}
+
+#[test]
+fn the_nearest_of_two_spheres_in_line_hides_the_other() {
+    // A red sphere in front of a green one, listed first: the green one, hit later in the list
+    // but further along the ray, must not win.
+    let near = sphere(vec3(0.0, 0.0, -3.0), 0.5, matte(RED));
+    let far = sphere(vec3(0.0, 0.0, -6.0), 1.5, matte(PURE_GREEN));
+    let scene = scene_of(vec![near, far], vec3(0.0, 0.0, 0.0));
+    let frame = frame_of(&scene, &Camera::default());
+    let middle = rgb(&frame, (VIEW / 2, VIEW / 2));
+    assert!(
+        is_red(middle),
+        "the middle shows {middle:?}, not the nearer, red sphere"
+    );
+}
+
+#[test]
+fn a_sphere_is_shaded_ambient_plus_n_dot_l() {
+    let center = vec3(0.0, 0.0, -4.0);
+    let light = vec3(-10.0, 0.0, -4.0);
+    let scene = scene_of(vec![sphere(center, 1.0, matte(RED))], light);
+    let camera = Camera::default();
+    let frame = frame_of(&scene, &camera);
+    // Two points on the sphere's front: on the left facing the light, on the right facing away.
+    for (side, normal) in [
+        (
+            "the side facing the light",
+            vec3(-FRAC_1_SQRT_2, 0.0, FRAC_1_SQRT_2),
+        ),
+        (
+            "the side facing away",
+            vec3(FRAC_1_SQRT_2, 0.0, FRAC_1_SQRT_2),
+        ),
+    ] {
+        let point = center + normal;
+        let red = rgb(&frame, project(&camera, point))[0];
+        let expected = byte(RED.x * lit_share(point, normal, light));
+        assert!(
+            red.abs_diff(expected) <= SHADING_SLACK,
+            "{side}: red {red}, where ambient + (1 - ambient) N.L gives {expected}"
+        );
+    }
+}
+
+#[test]
+fn a_sphere_between_the_floor_and_the_light_casts_a_shadow() {
+    let center = vec3(0.0, 0.0, -5.0);
+    let light = vec3(0.0, 3.0, -5.0);
+    let scene = scene_of(
+        vec![checkered_floor(), sphere(center, 1.0, matte(RED))],
+        light,
+    );
+    let camera = camera_at(vec3(0.0, 1.0, 0.0), 0.0, -0.3);
+    let frame = frame_of(&scene, &camera);
+    // Two floor points on even squares, both in view: the segment from the first to the light
+    // passes the sphere's centre 0.69 away, inside it; the second's passes 1.65 away.
+    let shaded = vec3(-0.5, FLOOR_Y, -4.2);
+    let lit = vec3(-2.5, FLOOR_Y, -4.2);
+    let up = vec3(0.0, 1.0, 0.0);
+    for (what, point, share) in [
+        ("in the shadow, ambient only", shaded, AMBIENT),
+        ("beside the shadow, lit", lit, lit_share(lit, up, light)),
+    ] {
+        let green = rgb(&frame, project(&camera, point))[1];
+        let expected = byte(WHITE.y * share);
+        assert!(
+            green.abs_diff(expected) <= SHADING_SLACK,
+            "the floor {what}: green {green}, expected {expected}"
+        );
+    }
+}
+
+#[test]
+fn only_what_lies_between_a_point_and_the_light_shades_it() {
+    // (compares) A floor point with two balls that do not lie between it and the light, one
+    // beyond the light and one beside it, is as bright as with no balls at all.
+    let light = vec3(0.0, 2.0, -4.0);
+    let beyond = sphere(vec3(0.0, 4.0, -4.0), 1.0, matte(RED));
+    let beside = sphere(vec3(4.0, 0.0, -8.0), 1.0, matte(RED));
+    let camera = camera_at(vec3(0.0, 1.0, 0.0), 0.0, -0.3);
+    let alone = frame_of(&scene_of(vec![checkered_floor()], light), &camera);
+    let with_balls = frame_of(
+        &scene_of(vec![checkered_floor(), beyond, beside], light),
+        &camera,
+    );
+    let point = project(&camera, vec3(0.5, FLOOR_Y, -3.5));
+    assert_eq!(
+        rgb(&with_balls, point),
+        rgb(&alone, point),
+        "a ball beyond the light or beside it darkened the floor"
+    );
+}
+
+#[test]
+fn the_floor_is_checkered_by_floor_x_plus_floor_z() {
+    let scene = scene_of(vec![checkered_floor()], vec3(0.0, 100.0, 0.0));
+    let camera = camera_at(vec3(0.0, 1.0, 3.0), 0.0, -0.5);
+    let frame = frame_of(&scene, &camera);
+    // Square centres on both sides of x = 0 and of z = 0.
+    for x in [-1.5, -0.5, 0.5, 1.5] {
+        for z in [-1.5, -0.5, 0.5, 1.5] {
+            let point = vec3(x, FLOOR_Y, z);
+            let green = rgb(&frame, project(&camera, point))[1];
+            let odd = odd_square(point);
+            assert_eq!(
+                green < ODD_BELOW,
+                odd,
+                "the square around x = {x}, z = {z} should be {} (green {green})",
+                if odd { "dark" } else { "bright" }
+            );
+        }
+    }
+}
+
+/// Where the unit sphere at `center` sends the ray of the default camera's pixel (x, y) when its
+/// eye is at `eye`, by the test's own geometry: the hit and R = D - 2(D.N)N, if it hits.
+fn reflected_ray(eye: Vec3, center: Vec3, (x, y): (usize, usize)) -> Option<(Vec3, Vec3)> {
+    let across = (x as f64 + 0.5) / HALF_VIEW - 1.0;
+    let upward = 1.0 - (y as f64 + 0.5) / HALF_VIEW;
+    let d = vec3(across, upward, -SCREEN_DISTANCE).normalize();
+    let point = ray_sphere(eye, d, center, 1.0)?;
+    let n = point - center;
+    Some((point, d - n * (2.0 * d.dot(n))))
+}
+
+/// Does the segment from a to b pass through the sphere?
+fn segment_hits_sphere(a: Vec3, b: Vec3, center: Vec3, radius: f64) -> bool {
+    let ab = b - a;
+    let t = ((center - a).dot(ab) / ab.dot(ab)).clamp(0.0, 1.0);
+    let closest = a + ab * t - center;
+    closest.dot(closest) < radius * radius
+}
+
+#[test]
+fn a_mirror_ball_reflects_the_checkered_floor_and_the_sky() {
+    let center = vec3(0.0, 0.0, -4.0);
+    let light = vec3(0.0, 20.0, 20.0);
+    let perfect_mirror = mirror(WHITE, 1.0);
+    let scene = scene_of(
+        vec![checkered_floor(), sphere(center, 1.0, perfect_mirror)],
+        light,
+    );
+    let camera = Camera::default();
+    let frame = frame_of(&scene, &camera);
+    // Every 4th pixel each way that sees the ball: its mirror ray goes up to the sky, or down to a
+    // floor square, which shows bright or dark unless the point is near a square's edge or in the
+    // ball's shadow.
+    let near_edge = |w: f64| (w - w.round()).abs() < 0.05;
+    for y in (0..VIEW).step_by(4) {
+        for x in (0..VIEW).step_by(4) {
+            let Some((point, direction)) = reflected_ray(camera.position, center, (x, y)) else {
+                continue;
+            };
+            let seen = rgb(&frame, (x, y));
+            if direction.y >= 0.0 {
+                assert_eq!(seen, bytes(SKY), "pixel {x}, {y} should reflect the sky");
+                continue;
+            }
+            let on_floor = point + direction * ((FLOOR_Y - point.y) / direction.y);
+            if near_edge(on_floor.x) || near_edge(on_floor.z) {
+                continue;
+            }
+            if segment_hits_sphere(on_floor, light, center, 1.0) {
+                continue;
+            }
+            let odd = odd_square(on_floor);
+            assert_eq!(
+                seen[1] < ODD_BELOW,
+                odd,
+                "pixel {x}, {y} should reflect a {} square at {on_floor:?}, shows {seen:?}",
+                if odd { "dark" } else { "bright" }
+            );
+        }
+    }
+}
+
+#[test]
+fn a_part_mirror_mixes_its_own_colour_with_what_its_mirror_ray_sees() {
+    // A grey wall z = -5 facing the eye, a quarter mirror, lit from the eye: the middle pixel
+    // shows three quarters of the wall's own lit colour and a quarter of what its mirror ray sees
+    // going straight back past the eye: the sky.
+    let reflectivity = 0.25;
+    let grey = vec3(0.6, 0.6, 0.6);
+    let facing_the_eye = vec3(0.0, 0.0, 1.0);
+    let wall = Primitive::Plane {
+        normal: facing_the_eye,
+        offset: 5.0, // p.N + d = z + 5 = 0
+    };
+    let camera = Camera::default();
+    let scene = scene_of(vec![(wall, mirror(grey, reflectivity))], camera.position);
+    let frame = frame_of(&scene, &camera);
+    let lit = lit_share(vec3(0.0, 0.0, -5.0), facing_the_eye, camera.position);
+    let expected = bytes(grey * (lit * (1.0 - reflectivity)) + SKY * reflectivity);
+    let shown = rgb(&frame, (VIEW / 2, VIEW / 2));
+    for (channel, name) in ["red", "green", "blue"].iter().enumerate() {
+        assert!(
+            shown[channel].abs_diff(expected[channel]) <= SHADING_SLACK,
+            "{name}: {}, where 3/4 of the lit wall and 1/4 of the sky give {} (all: {shown:?})",
+            shown[channel],
+            expected[channel]
+        );
+    }
+}
+
+/// Mirror bounces that a ray is followed through at most, as the README gives it.
+const BOUNCES: u32 = 5;
+
+#[test]
+fn facing_mirrors_stop_after_the_readmes_five_bounces() {
+    // A red mirror floor y = -1 and a blue mirror ceiling y = 1, both perfect mirrors, lit from
+    // between them. A ray bouncing between them brings back the colour of the surface where the
+    // recursion stops, lit as that point is lit: bounce 0 is the floor, so after an odd number of
+    // bounces it ends on the ceiling and after an even one on the floor.
+    let floor = Primitive::Plane {
+        normal: vec3(0.0, 1.0, 0.0),
+        offset: 1.0,
+    };
+    let ceiling = Primitive::Plane {
+        normal: vec3(0.0, -1.0, 0.0),
+        offset: 1.0,
+    };
+    let scene = scene_of(
+        vec![
+            (floor, mirror(vec3(1.0, 0.0, 0.0), 1.0)),
+            (ceiling, mirror(vec3(0.0, 0.0, 1.0), 1.0)),
+        ],
+        vec3(0.0, 0.0, -3.0),
+    );
+    // Steeply down: bounce k is at z = -0.1 - 0.2k, on the ceiling for odd k.
+    let ray = Ray::new(vec3(0.0, 0.0, 0.0), vec3(0.0, -1.0, -0.1), f64::INFINITY);
+    let color = scene.trace(ray, 0);
+    let on_ceiling = BOUNCES % 2 == 1;
+    let (height, normal, shown) = if on_ceiling {
+        (1.0, vec3(0.0, -1.0, 0.0), color.z)
+    } else {
+        (-1.0, vec3(0.0, 1.0, 0.0), color.x)
+    };
+    let last = vec3(0.0, height, -0.1 - 0.2 * f64::from(BOUNCES));
+    let expected = lit_share(last, normal, scene.light);
+    // Each bounce starts 10^-6 or so off its mirror, which moves the last point by about 10^-7;
+    // stopping a bounce early or late changes the brightness by 0.06 or more.
+    assert!(
+        (shown - expected).abs() < 1e-5,
+        "after {BOUNCES} bounces the ray should end lit {expected:.4}, it shows {shown:.4} \
+         (all: {color:?}): it stopped at another bounce"
+    );
+}
+
+#[test]
+fn a_colour_brighter_than_white_shows_as_255() {
+    // A matte ball of colour (0, 0.3, 2) seen head on, lit from the eye: its blue, about 2 at the
+    // middle, shows as 255; unclamped, about 510 would carry into green's byte.
+    let glowing = vec3(0.0, 0.3, 2.0);
+    let camera = Camera::default();
+    let scene = scene_of(
+        vec![sphere(vec3(0.0, 0.0, -4.0), 1.0, matte(glowing))],
+        camera.position,
+    );
+    let frame = frame_of(&scene, &camera);
+    let [red, green, blue] = rgb(&frame, (VIEW / 2, VIEW / 2));
+    // N.L at the middle pixel is within 10^-4 of 1: green 0.3 x 255 = 76.5 shows as 76.
+    let expected_green = byte(glowing.y);
+    assert_eq!(
+        [red, green, blue],
+        [0, expected_green, 255],
+        "blue over 1 should show as 255 and leave green at {expected_green}"
+    );
+}
+
+// The camera: turned, tilted, moved, and in odd places.
+
+/// A red ball and a scene lit from high up, for the camera tests.
+fn ball_scene(center: Vec3) -> Scene {
+    scene_of(vec![sphere(center, 0.5, matte(RED))], vec3(0.0, 50.0, 0.0))
+}
+
+#[test]
+fn turning_the_camera_left_brings_a_ball_on_the_left_into_view() {
+    let ball = vec3(-3.0, 0.0, -1.5); // far to the left of the default view
+    let scene = ball_scene(ball);
+    let turned = camera_at(vec3(0.0, 0.0, 0.0), FRAC_PI_2, 0.0);
+    let where_seen = project(&turned, ball);
+    let seen = rgb(&frame_of(&scene, &turned), where_seen);
+    assert!(
+        is_red(seen),
+        "turned a quarter left, the ball should show at {where_seen:?}"
+    );
+    let ahead = rgb(&frame_of(&scene, &Camera::default()), where_seen);
+    assert!(
+        !is_red(ahead),
+        "not turned, the ball on the left should be out of view"
+    );
+}
+
+#[test]
+fn tilting_the_camera_up_brings_a_ball_above_into_view() {
+    let ball = vec3(0.0, 3.0, -1.5); // high above the default view
+    let scene = ball_scene(ball);
+    let tilted = camera_at(vec3(0.0, 0.0, 0.0), 0.0, 1.1);
+    let where_seen = project(&tilted, ball);
+    let seen = rgb(&frame_of(&scene, &tilted), where_seen);
+    assert!(
+        is_red(seen),
+        "tilted up, the ball should show at {where_seen:?}"
+    );
+}
+
+#[test]
+fn moving_the_camera_moves_the_view() {
+    let ball = vec3(2.0, 0.5, -4.0);
+    let scene = ball_scene(ball);
+    let moved = camera_at(vec3(2.0, 0.5, 0.0), 0.0, 0.0); // the ball now dead ahead
+    let middle = (VIEW / 2, VIEW / 2);
+    let seen = rgb(&frame_of(&scene, &moved), middle);
+    assert!(
+        is_red(seen),
+        "moved to be level with the ball, the middle should show it"
+    );
+    let before = rgb(&frame_of(&scene, &Camera::default()), middle);
+    assert!(
+        !is_red(before),
+        "from the start, the ball is not in the middle"
+    );
+}
+
+#[test]
+fn a_camera_inside_a_sphere_sees_its_inside() {
+    let center = vec3(0.3, 0.0, -4.5);
+    let scene = scene_of(
+        vec![checkered_floor(), sphere(center, 1.0, mirror(WHITE, 0.85))],
+        vec3(-3.0, 5.0, 1.0),
+    );
+    let frame = frame_of(&scene, &camera_at(center, 0.0, 0.0));
+    let sky = bytes(SKY);
+    for y in (0..VIEW).step_by(7) {
+        for x in (0..VIEW).step_by(7) {
+            assert_ne!(
+                rgb(&frame, (x, y)),
+                sky,
+                "pixel {x}, {y} sees the sky through the ball"
+            );
+        }
+    }
+}
+
+#[test]
+fn from_below_the_floor_its_underside_gets_only_ambient_light() {
+    let scene = scene_of(vec![checkered_floor()], vec3(0.0, 5.0, 0.0));
+    let below = camera_at(vec3(0.0, -3.0, 0.0), 0.0, 1.0);
+    let frame = frame_of(&scene, &below);
+    // The light is above the floor: its underside faces away from it.
+    let even_square = vec3(0.5, FLOOR_Y, -1.5);
+    let green = rgb(&frame, project(&below, even_square))[1];
+    let expected = byte(WHITE.y * AMBIENT);
+    assert_eq!(
+        green, expected,
+        "the floor's underside should show the ambient light only"
+    );
+}
+
+#[test]
+fn looking_straight_down_shows_the_checkered_floor() {
+    let scene = scene_of(vec![checkered_floor()], vec3(0.0, 5.0, 0.0));
+    let down = camera_at(vec3(0.0, 0.0, 0.0), 0.0, -FRAC_PI_2);
+    let frame = frame_of(&scene, &down);
+    for point in [vec3(0.5, FLOOR_Y, 0.5), vec3(-0.5, FLOOR_Y, 0.5)] {
+        let green = rgb(&frame, project(&down, point))[1];
+        let odd = odd_square(point);
+        assert_eq!(
+            green < ODD_BELOW,
+            odd,
+            "straight down, {point:?} (green {green})"
+        );
+    }
+}
+
+#[test]
+fn a_light_inside_a_sphere_leaves_everything_else_in_shadow() {
+    // The light at the centre of a white ball: the floor and the ball's outside get only the
+    // ambient share of their colour.
+    let lamp = vec3(0.0, 2.0, -3.0);
+    let mut scene = scene_of(
+        vec![checkered_floor(), sphere(lamp, 0.5, matte(WHITE))],
+        lamp,
+    );
+    scene.sky = vec3(0.0, 0.0, 0.0);
+    let frame = frame_of(&scene, &Camera::default());
+    let most = byte(AMBIENT);
+    for y in (0..VIEW).step_by(8) {
+        for x in (0..VIEW).step_by(8) {
+            let [red, ..] = rgb(&frame, (x, y));
+            assert!(
+                red <= most,
+                "pixel {x}, {y} is lit ({red}) by a light shut in a ball"
+            );
+        }
+    }
+}

@@ -354,11 +354,11 @@ fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
     let start = ray.origin - MAP_CORNER - vec3(0.5, 0.0, 0.5) * MAP_SIDE; // from the map's middle
     let distance = start.x.hypot(start.z) * MAP_SCALE; // p(0)'s, in map pixels
     // Step s's dot is |s - distance| or more from the map's middle, all of the map within VIEW / √2
-    // of it: only steps within VIEW of distance can be on it. The last bound ends a ray to infinity,
-    // the first spares a far eye's frame the steps before the map (27 ms, not 364, 10^4 units out).
+    // of it: only the 2 VIEW + 1 steps from distance - VIEW on can be on it. That ends a ray to
+    // infinity, and spares a far eye's frame the steps before the map (14 ms, not 90, 10^4 out).
     let first = (from * pixels_per_t).max(distance - VIEW as f64).ceil();
-    let last = (ray.t * pixels_per_t).min(distance + VIEW as f64).floor();
-    for step in first as usize..=last as usize {
+    let last = (ray.t * pixels_per_t).floor();
+    for step in (first as usize..=last as usize).take(2 * VIEW + 1) {
         plot(frame, ray.at(step as f64 / pixels_per_t), 0, color);
     }
 }
@@ -444,7 +444,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
 }
 
 // Step 7, the controls: each step of the loop reads the keys, moves the camera, renders the frame
-// and shows it. The window's own mechanics sit below the loop, each in a function that says why.
+// and shows it. The window's own mechanics (no display, a window at rest, stale keys) say why.
 const MOVE_SPEED: f64 = 2.0; // units a second along each held key's direction
 const TURN_SPEED: f64 = 1.5; // radians a second
 
@@ -457,9 +457,8 @@ pub fn moved(mut camera: Camera, keys: &[Key], dt: f64) -> Camera {
     let down = |key| if keys.contains(&key) { 1.0 } else { 0.0 };
     let axis = |plus, minus| down(plus) - down(minus); // 1, -1, or 0 with both or neither down
     let (view, right, _) = camera.axes();
-    let motion = view * axis(W, S) + right * axis(D, A);
-    let rise = vec3(0.0, axis(R, F), 0.0);
-    camera.position = camera.position + (motion + rise) * (MOVE_SPEED * dt);
+    let motion = view * axis(W, S) + right * axis(D, A) + vec3(0.0, axis(R, F), 0.0);
+    camera.position = camera.position + motion * (MOVE_SPEED * dt);
     camera.yaw += TURN_SPEED * dt * axis(Left, Right);
     let pitch = camera.pitch + TURN_SPEED * dt * axis(Up, Down);
     camera.pitch = pitch.clamp(-FRAC_PI_2, FRAC_PI_2); // straight up or down at most
@@ -488,7 +487,7 @@ fn main() {
         camera = moved(camera, &keys, last_step.elapsed().as_secs_f64());
         last_step = Instant::now();
         if shown == Some(camera) {
-            // A window at rest: idle, the program and X took 1% of a core, not 10% sending frames.
+            // At rest, no frame: the program and X took 0.9% of a core here, 8% sending each step.
             window.update(); // reads the keys and waits out the step, sending no frame
             continue;
         }

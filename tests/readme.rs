@@ -88,8 +88,8 @@ fn the_readme_pictures_are_the_demos_frames() {
         let frame_size = (WIDTH as u32, VIEW as u32);
         assert!(
             size == frame_size,
-            "The README's picture {name} is stale: it is {} x {}, the demo's frame {WIDTH} x \
-             {VIEW}. {UPDATE}",
+            "The README's picture {name} and the window size it gives are stale: the picture is \
+             {} x {}, the frame now {WIDTH} x {VIEW}. Put the new size in the README. {UPDATE}",
             size.0,
             size.1
         );
@@ -155,16 +155,19 @@ fn every_legend_colour_and_ball_shows_in_a_readme_picture() {
         assert!(
             shown.contains(&color),
             "The README says its two pictures show every colour of the legend, but neither \
-             shows {name} ({color:06x}): the demo (Scene::default) no longer draws it from those \
-             poses. Change the demo back, or the README's pictures and legend."
+             shows {name} ({color:06x}): from those two poses (readme_pictures, in \
+             tests/readme.rs) the demo, Scene::default, no longer draws it. Change the demo so \
+             that it does, or choose other poses there and in the README and write the pictures \
+             anew."
         );
     }
     for (ball, color) in demo_balls() {
         assert!(
             shown.contains(&color),
             "The README says its pictures show each ball's outline, but neither shows that of \
-             {ball} in Scene::default ({color:06x}). Move the ball back into the slice, or \
-             change the README."
+             {ball} in Scene::default ({color:06x}): the pictures' planes (y = 0, and y = 0 \
+             tilted 0.15 radians down) miss it. Move the ball so that they cut it, or change the \
+             README."
         );
     }
 }
@@ -178,7 +181,8 @@ fn the_demo_balls_outlines_are_told_apart_from_the_legend_by_every_eye() {
                 panic!(
                     "The README says each ball's outline is told apart from every colour of the \
                      legend, by every eye; {ball} in Scene::default and {name} are too alike: \
-                     {problem}. Give that ball another colour, or change the README."
+                     {problem}. Give that ball a colour further from {name}, or change the \
+                     README."
                 );
             }
         }
@@ -217,15 +221,18 @@ fn the_readme_states_the_size_of_main_rs_within_its_budget() {
         ("tokens", tokens, MOST_TOKENS),
         ("non-blank", lines, MOST_LINES),
     ] {
+        assert!(
+            counted <= most,
+            "src/main.rs has {counted} {what}, over the budget of {most} that the README states: \
+             the README's claim that it is within its budget no longer holds. Make the code \
+             smaller (remove, never pack), or change the budget in the README and in \
+             tests/readme.rs (MOST_TOKENS, MOST_LINES)."
+        );
         let said = stated(&readme, what);
         assert!(
             said == counted,
             "The README's Size section says src/main.rs has {said} {what}; it has {counted} now: \
              put {counted} in the README."
-        );
-        assert!(
-            counted <= most,
-            "src/main.rs has {counted} {what}, over the budget of {most} that the README states."
         );
     }
 }

@@ -115,6 +115,29 @@ fn any_camera_pose_gives_colours_from_0_to_1() {
 }
 
 #[test]
+fn the_demo_renders_from_any_pose_with_no_panic_and_no_nan() {
+    // Whatever is in the demo's scene, yours too: a whole frame from a few poses, and rays from
+    // many more, each colour a number (above 1 is allowed: a colour may be brighter than white).
+    let scene = Scene::default();
+    for seed in 0..100 {
+        let camera = random_camera(&mut Random::new(seed));
+        if seed < 5 {
+            frame_of(&scene, &camera);
+        }
+        for x in (0..VIEW).step_by(73) {
+            for y in (0..VIEW).step_by(61) {
+                let color = scene.trace(camera.primary_ray(x as f64 + 0.5, y as f64 + 0.5), 0);
+                let numbers = !(color.x.is_nan() || color.y.is_nan() || color.z.is_nan());
+                assert!(
+                    numbers,
+                    "the demo, seed {seed}, pixel {x}, {y}: {color:?} from {camera:?}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
 fn a_frame_is_the_same_whatever_the_buffer_held_before() {
     // (compares) A frame rendered into a fresh buffer and into one holding another frame: render
     // draws every pixel anew, both halves.

@@ -54,8 +54,11 @@ fn simulate(pixel: u32, matrix: &[[f64; 3]; 3]) -> [f64; 3] {
 fn as_seen(pixel: u32) -> [(&'static str, [f64; 3]); 3] {
     [
         ("normal eyes", channels(pixel)),
-        ("protanopia", simulate(pixel, &PROTANOPIA)),
-        ("deuteranopia", simulate(pixel, &DEUTERANOPIA)),
+        ("a red-blind eye (protanopia)", simulate(pixel, &PROTANOPIA)),
+        (
+            "a green-blind eye (deuteranopia)",
+            simulate(pixel, &DEUTERANOPIA),
+        ),
     ]
 }
 

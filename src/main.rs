@@ -1,14 +1,14 @@
 //! A Whitted-style ray tracer in one file; beside its 3D view, a top-down 2D slice of the scene.
 use minifb::{Key, Window, WindowOptions};
 use std::f64::consts::{FRAC_PI_2, TAU};
-use std::ops;
+use std::ops::{Add, Mul, Neg, Sub};
 use std::time::Instant;
 
 pub const VIEW: usize = 512; // each half of the window is VIEW x VIEW pixels
 pub const WIDTH: usize = 2 * VIEW; // a row of the frame: the 3D view, then the 2D slice
 
 // Vector math: points, directions and colours (x, y, z = red, green, blue) are all a Vec3.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Default, PartialEq)]
 pub struct Vec3 {
     pub x: f64,
     pub y: f64,
@@ -32,28 +32,28 @@ impl Vec3 {
     }
 }
 
-impl ops::Add for Vec3 {
+impl Add for Vec3 {
     type Output = Vec3;
     fn add(self, other: Vec3) -> Vec3 {
         vec3(self.x + other.x, self.y + other.y, self.z + other.z)
     }
 }
 
-impl ops::Sub for Vec3 {
+impl Sub for Vec3 {
     type Output = Vec3;
     fn sub(self, other: Vec3) -> Vec3 {
         vec3(self.x - other.x, self.y - other.y, self.z - other.z)
     }
 }
 
-impl ops::Neg for Vec3 {
+impl Neg for Vec3 {
     type Output = Vec3;
     fn neg(self) -> Vec3 {
         vec3(-self.x, -self.y, -self.z)
     }
 }
 
-impl ops::Mul<f64> for Vec3 {
+impl Mul<f64> for Vec3 {
     type Output = Vec3;
     fn mul(self, scale: f64) -> Vec3 {
         vec3(self.x * scale, self.y * scale, self.z * scale)
@@ -85,7 +85,7 @@ impl Ray {
 // v(p2 - p0). By default it is at (0, 0, 0) looking at (0, 0, -1), as the assignment sets it.
 const SCREEN_DISTANCE: f64 = 1.0; // the slide's d: a screen 2 wide at distance 1 sees 90 degrees
 
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Default, PartialEq)]
 pub struct Camera {
     pub position: Vec3,
     pub yaw: f64,   // radians about +y; positive turns the view left
@@ -191,10 +191,9 @@ impl Default for Scene {
             offset: 1.0, // p.N + d = y + 1 = 0: the floor is y = -1
         };
         let white = vec3(0.9, 0.9, 0.9);
-        // A ball is its centre, radius, colour and reflectivity (0 matte, 1 a perfect mirror).
         let objects = vec![
             (floor, material(white, 0.0, true)), // white, matte (reflectivity 0), checkered
-            ball(vec3(0.3, 0.0, -4.5), 1.0, white, 0.85), // radius 1, white, reflectivity 0.85
+            ball(vec3(0.3, 0.0, -4.5), 1.0, white, 0.85), // centre, radius 1, white, mirror 0.85
             ball(vec3(-2.0, -0.2, -4.2), 0.8, vec3(0.9, 0.2, 0.2), 0.0), // radius 0.8, red, matte
             ball(vec3(1.9, -0.4, -3.4), 0.6, vec3(0.2, 0.8, 0.3), 0.0), // radius 0.6, green, matte
             ball(vec3(-0.9, -0.45, -2.6), 0.55, vec3(0.2, 0.4, 0.9), 0.0), // 0.55, blue, matte
@@ -207,8 +206,8 @@ impl Default for Scene {
     }
 }
 
-// Shading: colour = surface × (ambient + (1 - ambient) N.L where the shadow ray reaches the light),
-// mixed by the reflectivity with the colour the mirror ray R = D - 2(D.N)N brings back.
+// Shading: colour = surface × (ambient + (1 - ambient) N.L where the shadow ray reaches the light)
+// × ODD_SQUARE on odd floor squares, mixed by reflectivity with what mirror ray R = D - 2(D.N)N sees.
 const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
 const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
 const LIFT: f64 = 1e-6; // a ray leaving a surface starts this far off it, times 1 + |point|
@@ -228,7 +227,7 @@ impl Hit {
     }
     /// The mirror ray of a ray along D: R = D - 2(D.N)N.
     fn mirror_ray(&self, direction: Vec3) -> Ray {
-        let mirrored = direction - self.normal * (2.0 * direction.dot(self.normal));
+        let mirrored = direction - self.normal * 2.0 * direction.dot(self.normal);
         self.outgoing(mirrored, f64::INFINITY)
     }
 }
@@ -294,8 +293,7 @@ fn odd_square(point: Vec3) -> bool {
     (point.x.floor() + point.z.floor()).rem_euclid(2.0) == 1.0 // the slide's & 1: the sum mod 2
 }
 
-// Rendering, the slide's step 6: for each pixel, the colour of its primary ray.
-/// Fills a frame of WIDTH x VIEW 0RGB pixels: the 3D view, then the 2D slice.
+// Rendering, the slide's step 6: each pixel of the 3D view is its primary ray's colour; then the map.
 pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     for y in 0..VIEW {
         for x in 0..VIEW {
@@ -354,11 +352,11 @@ fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
     let start = ray.origin - MAP_CORNER - vec3(0.5, 0.0, 0.5) * MAP_SIDE; // from the map's middle
     let distance = start.x.hypot(start.z) * MAP_SCALE; // p(0)'s, in map pixels
     // Step s's dot is |s - distance| or more from the map's middle, all of the map within VIEW / √2
-    // of it: only the 2 VIEW + 1 steps from distance - VIEW on can be on it. That ends a ray to
-    // infinity, and spares a far eye's frame the steps before the map (14 ms, not 90, 10^4 out).
+    // of it: only steps from distance - VIEW to distance + VIEW can be on it. Walking at most 2 VIEW
+    // steps from the first ends a ray that starts or ends far off the map (10^16 units out, or ∞).
     let first = (from * pixels_per_t).max(distance - VIEW as f64).ceil();
-    let last = (ray.t * pixels_per_t).floor();
-    for step in (first as usize..=last as usize).take(2 * VIEW + 1) {
+    let last = (ray.t * pixels_per_t).min(first + 2.0 * VIEW as f64);
+    for step in first as usize..=last as usize {
         plot(frame, ray.at(step as f64 / pixels_per_t), 0, color);
     }
 }
@@ -400,8 +398,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
                     draw_ray(frame, &ray, 0.0, to_rgb(material.color));
                 }
             }
-            // A plane is not drawn: the slice cuts it in a line across the whole map, or not at
-            // all, and the sampled rays' dots show where they meet it.
+            // A plane is not drawn: the slice cuts it in a line across the map, or not at all.
             Primitive::Plane { .. } => {}
         }
     }
@@ -431,7 +428,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     let row_start = eye + view * SCREEN_DISTANCE - right; // the screen's middle row: C - right
     draw_ray(frame, &Ray::new(row_start, right, 2.0), 0.0, CAMERA_COLOR); // to C + right
     // The light's marker, then the eye's; off the map, each whole on the edge nearest to it.
-    let inset = (f64::from(MARKER_RADIUS) + 0.5) / MAP_SCALE; // to its middle pixel's middle
+    let inset = (MARKER_RADIUS as f64 + 0.5) / MAP_SCALE; // to its middle pixel's middle
     let snap = |w: f64, corner: f64| w.clamp(corner + inset, corner + MAP_SIDE - inset);
     for (point, color) in [(scene.light, LIGHT_COLOR), (eye, CAMERA_COLOR)] {
         let middle = vec3(
@@ -443,24 +440,24 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     }
 }
 
-// Step 7, the controls: each step of the loop reads the keys, moves the camera, renders the frame
-// and shows it. The window's own mechanics (no display, a window at rest, stale keys) say why.
+// Step 7, the controls: each step of the loop reads the keys, moves the camera, renders and shows.
 const MOVE_SPEED: f64 = 2.0; // units a second along each held key's direction
 const TURN_SPEED: f64 = 1.5; // radians a second
 
 /// The camera `dt` seconds on with `keys` down, each pair of keys an axis; Home: back to the start.
 pub fn moved(mut camera: Camera, keys: &[Key], dt: f64) -> Camera {
-    use Key::*; // W, S, A, D, R, F, Up, Down, Left, Right and Home, each without Key::
-    if keys.contains(&Home) {
+    if keys.contains(&Key::Home) {
         return Camera::default();
     }
     let down = |key| if keys.contains(&key) { 1.0 } else { 0.0 };
     let axis = |plus, minus| down(plus) - down(minus); // 1, -1, or 0 with both or neither down
     let (view, right, _) = camera.axes();
-    let motion = view * axis(W, S) + right * axis(D, A) + vec3(0.0, axis(R, F), 0.0);
-    camera.position = camera.position + motion * (MOVE_SPEED * dt);
-    camera.yaw += TURN_SPEED * dt * axis(Left, Right);
-    let pitch = camera.pitch + TURN_SPEED * dt * axis(Up, Down);
+    let motion = view * axis(Key::W, Key::S)
+        + right * axis(Key::D, Key::A)
+        + vec3(0.0, axis(Key::R, Key::F), 0.0);
+    camera.position = camera.position + motion * MOVE_SPEED * dt;
+    camera.yaw += TURN_SPEED * dt * axis(Key::Left, Key::Right);
+    let pitch = camera.pitch + TURN_SPEED * dt * axis(Key::Up, Key::Down);
     camera.pitch = pitch.clamp(-FRAC_PI_2, FRAC_PI_2); // straight up or down at most
     camera
 }
@@ -470,9 +467,10 @@ fn main() {
     let mut window =
         Window::new(title, WIDTH, VIEW, WindowOptions::default()).unwrap_or_else(|error| {
             // No window, most often for want of an X server: one line on why, and exit status 1.
-            let unset = std::env::var_os("DISPLAY").is_none();
-            let hint = if unset { ", as DISPLAY is not set" } else { "" };
-            eprintln!("raytracer: {error}{hint}");
+            match std::env::var_os("DISPLAY") {
+                None => eprintln!("raytracer: {error}, as DISPLAY is not set"),
+                Some(_) => eprintln!("raytracer: {error}"),
+            }
             std::process::exit(1)
         });
     window.set_target_fps(60); // at most 60 steps a second: it sleeps for the rest of each
@@ -486,13 +484,16 @@ fn main() {
         let keys = keys_down(&window, &mut stale);
         camera = moved(camera, &keys, last_step.elapsed().as_secs_f64());
         last_step = Instant::now();
-        if shown == Some(camera) {
-            // At rest, no frame: the program and X took 0.9% of a core here, 8% sending each step.
-            window.update(); // reads the keys and waits out the step, sending no frame
+        // A window at rest sends no frame: the program and X took 0.9% of a core here, not 8%.
+        let at_rest = shown == Some(camera);
+        if at_rest {
+            window.update(); // update_with_buffer less the frame: one of the two each step
             continue;
         }
         render(&scene, &camera, &mut frame);
-        window.update_with_buffer(&frame, WIDTH, VIEW).ok(); // fails only for a wrong size
+        window
+            .update_with_buffer(&frame, WIDTH, VIEW)
+            .expect("a frame the window's size");
         shown = Some(camera);
     }
 }

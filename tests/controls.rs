@@ -36,11 +36,11 @@ fn w_and_s_move_forward_and_back_along_the_view() {
     let (view, ..) = camera_axes(&camera);
     for (keys, sign) in [([Key::W], 1.0), ([Key::S], -1.0)] {
         let expected = camera.position + view * (sign * MOVE_SPEED * DT);
-        let moved = moved(camera, &keys, DT);
+        let after = moved(camera, &keys, DT);
         assert!(
-            same(moved.position, expected),
+            same(after.position, expected),
             "{keys:?} for {DT} s should move the eye to {expected:?}, not {:?}",
-            moved.position
+            after.position
         );
     }
 }
@@ -51,11 +51,11 @@ fn a_and_d_move_left_and_right_level() {
     let (_, right, _) = camera_axes(&camera);
     for (keys, sign) in [([Key::D], 1.0), ([Key::A], -1.0)] {
         let expected = camera.position + right * (sign * MOVE_SPEED * DT);
-        let moved = moved(camera, &keys, DT);
+        let after = moved(camera, &keys, DT);
         assert!(
-            same(moved.position, expected),
+            same(after.position, expected),
             "{keys:?} for {DT} s should move the eye to {expected:?}, not {:?}",
-            moved.position
+            after.position
         );
     }
 }
@@ -65,11 +65,11 @@ fn r_and_f_move_straight_up_and_down() {
     let camera = somewhere();
     for (keys, sign) in [([Key::R], 1.0), ([Key::F], -1.0)] {
         let expected = camera.position + vec3(0.0, sign * MOVE_SPEED * DT, 0.0);
-        let moved = moved(camera, &keys, DT);
+        let after = moved(camera, &keys, DT);
         assert!(
-            same(moved.position, expected),
+            same(after.position, expected),
             "{keys:?} for {DT} s should move the eye to {expected:?}, not {:?}",
-            moved.position
+            after.position
         );
     }
 }
@@ -85,17 +85,18 @@ fn the_arrows_turn_left_and_right_and_tilt_up_and_down() {
         (Key::Down, camera.yaw, camera.pitch - turn),
     ];
     for (key, yaw, pitch) in cases {
-        let moved = moved(camera, &[key], DT);
+        let after = moved(camera, &[key], DT);
         assert!(
-            (moved.yaw - yaw).abs() < 1e-12 && (moved.pitch - pitch).abs() < 1e-12,
+            (after.yaw - yaw).abs() < 1e-12 && (after.pitch - pitch).abs() < 1e-12,
             "{key:?} for {DT} s should turn the camera to yaw {yaw:.3}, pitch {pitch:.3}, not \
              yaw {:.3}, pitch {:.3}",
-            moved.yaw,
-            moved.pitch
+            after.yaw,
+            after.pitch
         );
-        assert_eq!(
-            moved.position, camera.position,
-            "{key:?} should not move the eye"
+        assert!(
+            after.position == camera.position,
+            "{key:?} should not move the eye, but moved it to {:?}",
+            after.position
         );
     }
 }
@@ -103,41 +104,39 @@ fn the_arrows_turn_left_and_right_and_tilt_up_and_down() {
 #[test]
 fn a_pair_of_opposite_keys_held_together_cancel_out() {
     let camera = somewhere();
-    for keys in [
+    let pairs = [
         [Key::W, Key::S],
         [Key::A, Key::D],
         [Key::R, Key::F],
         [Key::Left, Key::Right],
-    ] {
-        assert_eq!(
-            moved(camera, &keys, DT),
-            camera,
-            "{keys:?} held together moved the camera"
+        [Key::Up, Key::Down],
+    ];
+    for keys in pairs {
+        let after = moved(camera, &keys, DT);
+        assert!(
+            after == camera,
+            "{keys:?} held together moved the camera to {after:?}"
         );
     }
 }
 
 #[test]
 fn tilting_stops_at_straight_up_and_straight_down() {
-    let up = moved(somewhere(), &[Key::Up], 10.0);
-    assert_eq!(
-        up.pitch, FRAC_PI_2,
-        "held up for 10 s, the camera should look straight up"
-    );
-    let down = moved(somewhere(), &[Key::Down], 10.0);
-    assert_eq!(
-        down.pitch, -FRAC_PI_2,
-        "held down for 10 s, it should look straight down"
-    );
+    for (key, most) in [(Key::Up, FRAC_PI_2), (Key::Down, -FRAC_PI_2)] {
+        let pitch = moved(somewhere(), &[key], 10.0).pitch;
+        assert!(
+            pitch == most,
+            "{key:?} held for 10 s should stop the tilt at {most:.4} radians, not {pitch:.4}"
+        );
+    }
 }
 
 #[test]
 fn home_puts_the_camera_back_at_the_start() {
-    let home = moved(somewhere(), &[Key::Home, Key::W], DT);
-    assert_eq!(
-        home,
-        Camera::default(),
-        "Home should put the camera back at the start"
+    let after = moved(somewhere(), &[Key::Home, Key::W], DT);
+    assert!(
+        after == Camera::default(),
+        "Home should put the camera back at the start, not at {after:?}"
     );
 }
 
@@ -157,30 +156,39 @@ fn run(display: Option<&str>) -> (Option<i32>, String) {
     (output.status.code(), stderr)
 }
 
+/// What the one line says when DISPLAY is not set.
+const HINT: &str = "DISPLAY is not set";
+
 #[test]
-fn without_a_display_it_says_why_in_one_line() {
-    let hint = "DISPLAY is not set";
+fn without_display_set_it_says_so_in_one_line() {
     let (status, stderr) = run(None);
-    assert_eq!(
-        status,
-        Some(1),
-        "with no DISPLAY the exit status should be 1: {stderr}"
-    );
-    assert_eq!(stderr.lines().count(), 1, "one line, not: {stderr}");
     assert!(
-        stderr.contains(hint),
-        "the line should say that {hint}: {stderr}"
+        status == Some(1),
+        "with no DISPLAY the exit status should be 1, not {status:?}"
     );
-    // DISPLAY set, to a display no X server serves: one line, without that hint.
-    let (status, stderr) = run(Some(":4711"));
-    assert_eq!(
-        status,
-        Some(1),
-        "with no X server the exit status should be 1: {stderr}"
-    );
-    assert_eq!(stderr.lines().count(), 1, "one line, not: {stderr}");
     assert!(
-        !stderr.contains(hint),
+        stderr.lines().count() == 1,
+        "it should say why in one line, not: {stderr}"
+    );
+    assert!(
+        stderr.contains(HINT),
+        "the line should say that {HINT}; it says: {stderr}"
+    );
+}
+
+#[test]
+fn with_no_x_server_at_display_it_says_why_in_one_line() {
+    let (status, stderr) = run(Some(":4711")); // a display no X server serves
+    assert!(
+        status == Some(1),
+        "with no X server the exit status should be 1, not {status:?}"
+    );
+    assert!(
+        stderr.lines().count() == 1,
+        "it should say why in one line, not: {stderr}"
+    );
+    assert!(
+        !stderr.contains(HINT),
         "DISPLAY is set, yet the line says it is not: {stderr}"
     );
 }

@@ -1,6 +1,28 @@
 //! The tests' own scenes and geometry. Each expectation is worked out here from the slides'
-//! formulas (the camera's screen, the ray-sphere quadratic, N.L), not by calling `src/main.rs`.
+//! formulas (the camera's screen, the ray-sphere quadratic, N.L), with main.rs's vector maths but
+//! none of its tracer; and how the tests print points and poses in their messages.
 use crate::raytracer::*;
+use std::fmt;
+
+impl fmt::Debug for Vec3 {
+    fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        write!(f, "({}, {}, {})", self.x, self.y, self.z)
+    }
+}
+
+impl fmt::Debug for Camera {
+    fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        let Camera {
+            position,
+            yaw,
+            pitch,
+        } = self;
+        write!(
+            f,
+            "the eye at {position:?} turned {yaw} and tilted {pitch} radians"
+        )
+    }
+}
 
 /// The figures the README gives, which the tests hold the program to.
 pub const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
@@ -155,7 +177,15 @@ pub fn sampled_directions(camera: &Camera) -> Vec<Vec3> {
         .collect()
 }
 
-/// The slide's checkerboard F, with floor: is the floor square under this point an odd one?
+/// The slide's checkerboard F for unit squares (no 2), with floor: is the floor square under this
+/// point an odd one?
 pub fn odd_square(point: Vec3) -> bool {
     (point.x.floor() as i64 + point.z.floor() as i64) & 1 == 1
+}
+
+/// Does a floor point's green byte show a dark square? Dark is under half of what a lit white even
+/// square there shows: the odd squares are far darker, the even ones that bright.
+pub fn is_dark(green: u32, point: Vec3, light: Vec3) -> bool {
+    let up = vec3(0.0, 1.0, 0.0);
+    green < byte(WHITE.y * lit_share(point, up, light)) / 2
 }

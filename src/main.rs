@@ -206,8 +206,8 @@ impl Default for Scene {
     }
 }
 
-// Shading: colour = surface × (ambient + (1 - ambient) N.L where the shadow ray reaches the light)
-// × ODD_SQUARE on odd floor squares, mixed by reflectivity with what mirror ray R = D - 2(D.N)N sees.
+// Steps 6, 8, 9, shading: colour = surface × (ambient + (1 - ambient) N.L if the shadow ray reaches
+// the light) × ODD_SQUARE on odd squares, mixed by reflectivity with what R = D - 2(D.N)N sees.
 const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
 const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
 const LIFT: f64 = 1e-6; // a ray leaving a surface starts this far off it, times 1 + |point|
@@ -355,7 +355,7 @@ fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
     // of it: only steps from distance - VIEW to distance + VIEW can be on it. Walking at most 2 VIEW
     // steps from the first ends a ray that starts or ends far off the map (10^16 units out, or ∞).
     let first = (from * pixels_per_t).max(distance - VIEW as f64).ceil();
-    let last = (ray.t * pixels_per_t).min(first + 2.0 * VIEW as f64);
+    let last = f64::min(ray.t * pixels_per_t, first + 2.0 * VIEW as f64).floor();
     for step in first as usize..=last as usize {
         plot(frame, ray.at(step as f64 / pixels_per_t), 0, color);
     }
@@ -398,7 +398,8 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
                     draw_ray(frame, &ray, 0.0, to_rgb(material.color));
                 }
             }
-            // A plane is not drawn: the slice cuts it in a line across the map, or not at all.
+            // A plane is not drawn: the slice cuts it in a line right across the map, which would
+            // bury the rays; the sampled rays' dots show where they meet it.
             Primitive::Plane { .. } => {}
         }
     }
@@ -440,7 +441,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     }
 }
 
-// Step 7, the controls: each step of the loop reads the keys, moves the camera, renders and shows.
+// Step 7, the controls: a step reads the keys, moves the camera, renders and shows if it moved.
 const MOVE_SPEED: f64 = 2.0; // units a second along each held key's direction
 const TURN_SPEED: f64 = 1.5; // radians a second
 
@@ -457,8 +458,8 @@ pub fn moved(mut camera: Camera, keys: &[Key], dt: f64) -> Camera {
         + vec3(0.0, axis(Key::R, Key::F), 0.0);
     camera.position = camera.position + motion * MOVE_SPEED * dt;
     camera.yaw += TURN_SPEED * dt * axis(Key::Left, Key::Right);
-    let pitch = camera.pitch + TURN_SPEED * dt * axis(Key::Up, Key::Down);
-    camera.pitch = pitch.clamp(-FRAC_PI_2, FRAC_PI_2); // straight up or down at most
+    camera.pitch += TURN_SPEED * dt * axis(Key::Up, Key::Down);
+    camera.pitch = camera.pitch.clamp(-FRAC_PI_2, FRAC_PI_2); // straight up or down at most
     camera
 }
 
@@ -498,8 +499,7 @@ fn main() {
     }
 }
 
-/// The keys down, less any that was down while the window lacked the focus and has not been let go
-/// since: X tells no window of a key let go elsewhere, so such a key would stay down for good.
+/// Keys down, less any held since the window lost the focus: X never tells it they were let go.
 fn keys_down(window: &Window, stale: &mut Vec<Key>) -> Vec<Key> {
     let mut keys = window.get_keys();
     if !window.is_active() {

@@ -191,4 +191,8 @@ fn with_no_x_server_at_display_it_says_why_in_one_line() {
         !stderr.contains(HINT),
         "DISPLAY is set, yet the line says it is not: {stderr}"
     );
+    assert!(
+        stderr.contains("window"),
+        "the line should say that the window could not be made; it says: {stderr}"
+    );
 }

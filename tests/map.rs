@@ -46,11 +46,29 @@ fn inside_map(point: Vec3, margin: f64) -> bool {
 
 /// The map pixels within `pixels` map pixels of a world point's x and z (those on the map).
 fn map_near(frame: &[u32], point: Vec3, pixels: i32) -> Vec<u32> {
+    map_around(frame, point, pixels, |_| true)
+}
+
+/// The map pixels exactly `reach` map pixels from a world point's, in x or z: the ring just
+/// outside a square `reach - 1` either side.
+fn ring(frame: &[u32], point: Vec3, reach: i32) -> Vec<u32> {
+    map_around(frame, point, reach, |(dx, dz)| {
+        dx.abs().max(dz.abs()) == reach
+    })
+}
+
+/// The map pixels up to `pixels` either side of a world point's x and z that `keep` keeps.
+fn map_around(
+    frame: &[u32],
+    point: Vec3,
+    pixels: i32,
+    keep: impl Fn((i32, i32)) -> bool,
+) -> Vec<u32> {
     let mut found = Vec::new();
     for dx in -pixels..=pixels {
         for dz in -pixels..=pixels {
             let near = point + vec3(f64::from(dx), 0.0, f64::from(dz)) * (1.0 / MAP_SCALE);
-            if inside_map(near, 0.0) {
+            if keep((dx, dz)) && inside_map(near, 0.0) {
                 found.push(map_pixel(frame, near));
             }
         }
@@ -111,13 +129,17 @@ fn two_poses() -> [Camera; 2] {
 }
 
 #[test]
-fn the_eye_is_a_pink_square() {
+fn the_eye_is_a_pink_square_7_map_pixels_wide() {
     let scene = scene_of(vec![], vec3(0.0, 5.0, 2.0));
     for camera in two_poses() {
         let frame = frame_of(&scene, &camera);
         if let Err(seen) = square_at(&frame, camera.position, MARKER_REACH, CAMERA_COLOR) {
             panic!("{camera:?}: no CAMERA_COLOR square 7 map pixels wide at the eye, {seen}");
         }
+        assert!(
+            !ring(&frame, camera.position, MARKER_REACH + 1).contains(&CAMERA_COLOR),
+            "{camera:?}: the eye's square is wider than 7 map pixels"
+        );
     }
 }
 
@@ -148,12 +170,16 @@ fn the_screens_middle_row_is_a_pink_line_from_c_minus_right_to_c_plus_right() {
 }
 
 #[test]
-fn the_light_is_an_orange_square() {
+fn the_light_is_an_orange_square_7_map_pixels_wide() {
     let light = vec3(-2.0, 5.0, 2.0);
     let frame = frame_of(&scene_of(vec![], light), &Camera::default());
     if let Err(seen) = square_at(&frame, light, MARKER_REACH, LIGHT_COLOR) {
         panic!("no LIGHT_COLOR square 7 map pixels wide under the light at {light:?}, {seen}");
     }
+    assert!(
+        !ring(&frame, light, MARKER_REACH + 1).contains(&LIGHT_COLOR),
+        "the light's square is wider than 7 map pixels"
+    );
 }
 
 #[test]
@@ -297,6 +323,11 @@ fn each_sampled_ray_that_hits_a_sphere_ends_there_with_a_dot() {
                      ball, at {hit:?}; {seen}"
                 );
             }
+            // Only the ray itself crosses the ring around the dot: the dot is no wider.
+            assert!(
+                !ring(&frame, hit, 2).iter().all(|&pixel| pixel == RAY_COLOR),
+                "{camera:?}: the dot at {hit:?} is wider than 3 map pixels"
+            );
             // Past the hit, inside the ball, the ray is not drawn on.
             let inside = hit + direction.normalize() * (0.5 * radius);
             assert!(
@@ -357,9 +388,9 @@ fn leftmost_hit(camera: &Camera, center: Vec3, radius: f64) -> Vec3 {
 }
 
 #[test]
-fn a_shadow_ray_runs_from_a_hit_to_the_light() {
+fn a_shadow_ray_runs_from_a_hit_to_the_light_and_stops_there() {
     // A ball ahead, the light to its left: the leftmost sampled hit's shadow ray runs to the
-    // light, drawn in SHADOW_COLOR half way.
+    // light, drawn in SHADOW_COLOR half way, and not on past the light.
     let camera = Camera::default();
     let (center, radius) = (vec3(1.5, 0.0, -6.0), 1.0);
     let light = vec3(-3.0, 0.0, -3.0);
@@ -372,6 +403,11 @@ fn a_shadow_ray_runs_from_a_hit_to_the_light() {
     if let Err(seen) = drawn_near(&frame, halfway, SHADOW_COLOR) {
         panic!("no SHADOW_COLOR half way from the hit at {hit:?} to the light: {seen}");
     }
+    let past = light + (light - hit).normalize() * 0.5; // past the light's marker
+    assert!(
+        drawn_near(&frame, past, SHADOW_COLOR).is_err(),
+        "the shadow ray is drawn on past the light, at {past:?}"
+    );
 }
 
 #[test]

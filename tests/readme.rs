@@ -84,14 +84,12 @@ fn the_readme_pictures_are_the_demos_frames() {
             println!("wrote {name}: look at it before committing it");
             continue;
         }
-        let (size, stored) = read_png(&path);
-        let frame_size = (WIDTH as u32, VIEW as u32);
+        let ((width, height), stored) = read_png(&path);
         assert!(
-            size == frame_size,
+            (width, height) == (WIDTH as u32, VIEW as u32),
             "The README's picture {name} and the window size it gives are stale: the picture is \
-             {} x {}, the frame now {WIDTH} x {VIEW}. Put the new size in the README. {UPDATE}",
-            size.0,
-            size.1
+             {width} x {height}, the frame now {WIDTH} x {VIEW}. Put the new size in the README. \
+             {UPDATE}"
         );
         let differing = rendered
             .chunks(3)

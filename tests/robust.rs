@@ -228,8 +228,8 @@ fn assert_hit(found: Option<f64>, expected: Expected, case: &str) {
 
 #[test]
 fn a_hit_is_the_nearest_root_in_front_of_the_ray() {
-    // Rays aimed at or near a sphere, a third of them from inside it, and any plane: about half
-    // the rays hit their sphere (three in five), a third of all from inside at the far root.
+    // Rays aimed at or near a sphere, a third of them from inside it, and any plane: three in
+    // five rays hit their sphere, a third of all from inside at the far root.
     let mut random = Random::new(7);
     for case in 0..3000 {
         let center = random.point(5.0);

@@ -60,32 +60,46 @@ fn a_sphere_covers_its_projected_centre_and_ends_at_its_silhouette() {
         "the sphere's centre shows {middle:?}, not the red sphere"
     );
     // Seen from the eye the sphere fills a cone of half-angle asin(r / distance): 0.02 radians
-    // (5 pixels) past it, beside the sphere, is sky.
+    // (5 pixels) inside it, beside the centre, is the sphere, and 0.02 radians past it is sky.
     let distance = center.length();
-    let past = (radius / distance).asin() + 0.02;
+    let silhouette = (radius / distance).asin();
     let toward = center.normalize();
     let beside = vec3(toward.z, 0.0, -toward.x).normalize(); // level, at right angles to `toward`
-    let outside = (toward * past.cos() + beside * past.sin()) * distance;
-    let seen = rgb(&frame, project(&camera, outside));
+    let at = |angle: f64| {
+        project(
+            &camera,
+            (toward * angle.cos() + beside * angle.sin()) * distance,
+        )
+    };
+    let inside = rgb(&frame, at(silhouette - 0.02));
     assert!(
-        seen == bytes(SKY),
-        "just past the silhouette should be sky, not {seen:?}"
+        is_red(inside),
+        "just inside the silhouette should be the red sphere, not {inside:?}"
+    );
+    let outside = rgb(&frame, at(silhouette + 0.02));
+    assert!(
+        outside == bytes(SKY),
+        "just past the silhouette should be sky, not {outside:?}"
     );
 }
 
 #[test]
 fn the_nearest_of_two_spheres_in_line_hides_the_other() {
-    // A red sphere in front of a green one, listed first: the green one, hit later in the list
-    // but further along the ray, must not win.
-    let near = sphere(vec3(0.0, 0.0, -3.0), 0.5, matte(RED));
-    let far = sphere(vec3(0.0, 0.0, -6.0), 1.5, matte(PURE_GREEN));
-    let scene = scene_of(vec![near, far], vec3(0.0, 0.0, 0.0));
-    let frame = frame_of(&scene, &Camera::default());
-    let middle = rgb(&frame, (VIEW / 2, VIEW / 2));
-    assert!(
-        is_red(middle),
-        "the middle shows {middle:?}, not the nearer, red sphere"
-    );
+    // A red sphere in front of a green one, listed first and then last: the nearer wins whatever
+    // the list's order.
+    let near = || sphere(vec3(0.0, 0.0, -3.0), 0.5, matte(RED));
+    let far = || sphere(vec3(0.0, 0.0, -6.0), 1.5, matte(PURE_GREEN));
+    for (order, objects) in [
+        ("first", vec![near(), far()]),
+        ("last", vec![far(), near()]),
+    ] {
+        let frame = frame_of(&scene_of(objects, vec3(0.0, 0.0, 0.0)), &Camera::default());
+        let middle = rgb(&frame, (VIEW / 2, VIEW / 2));
+        assert!(
+            is_red(middle),
+            "with the nearer, red sphere listed {order}, the middle shows {middle:?}, not red"
+        );
+    }
 }
 
 #[test]
@@ -186,6 +200,10 @@ fn the_floor_is_checkered_by_floor_x_plus_floor_z() {
     }
 }
 
+/// Floor points this close to a square's edge (in units) are passed over: a pixel's ray, bent by
+/// the curved mirror, may land on either square there.
+const EDGE_BAND: f64 = 0.05;
+
 /// Where the unit sphere at `center` sends the ray of the default camera's pixel (x, y) when its
 /// eye is at `eye`, by the test's own geometry: the hit and R = D - 2(D.N)N, if it hits.
 fn reflected_ray(eye: Vec3, center: Vec3, (x, y): (usize, usize)) -> Option<(Vec3, Vec3)> {
@@ -219,7 +237,7 @@ fn a_mirror_ball_reflects_the_checkered_floor_and_the_sky() {
     // Every 4th pixel each way that sees the ball: its mirror ray goes up to the sky, or down to a
     // floor square, which shows bright or dark unless the point is near a square's edge or in the
     // ball's shadow.
-    let near_edge = |w: f64| (w - w.round()).abs() < 0.05;
+    let near_edge = |w: f64| (w - w.round()).abs() < EDGE_BAND;
     for y in (0..VIEW).step_by(4) {
         for x in (0..VIEW).step_by(4) {
             let Some((point, direction)) = reflected_ray(camera.position, center, (x, y)) else {

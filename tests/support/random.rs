@@ -15,6 +15,7 @@ impl Random {
     }
     /// A number from 0 up to 1, never 1 itself.
     pub fn next(&mut self) -> f64 {
+        // xorshift64*'s published shifts (12, 25, 27) and multiplier (Vigna, 2016).
         self.state ^= self.state >> 12;
         self.state ^= self.state << 25;
         self.state ^= self.state >> 27;

@@ -293,7 +293,7 @@ fn odd_square(point: Vec3) -> bool {
     (point.x.floor() + point.z.floor()).rem_euclid(2.0) == 1.0 // the slide's & 1: the sum mod 2
 }
 
-// Rendering, the slide's step 6: each pixel of the 3D view is its primary ray's colour; then the map.
+// Rendering, the slide's step 6: each pixel of the 3D view its primary ray's colour; then the map.
 pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     for y in 0..VIEW {
         for x in 0..VIEW {
@@ -352,8 +352,8 @@ fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
     let start = ray.origin - MAP_CORNER - vec3(0.5, 0.0, 0.5) * MAP_SIDE; // from the map's middle
     let distance = start.x.hypot(start.z) * MAP_SCALE; // p(0)'s, in map pixels
     // Step s's dot is |s - distance| or more from the map's middle, all of the map within VIEW / √2
-    // of it: only steps from distance - VIEW to distance + VIEW can be on it. Walking at most 2 VIEW
-    // steps from the first ends a ray that starts or ends far off the map (10^16 units out, or ∞).
+    // of it: only steps from distance - VIEW to distance + VIEW can be on it. Walking 2 VIEW steps
+    // at most from the first ends a ray that starts or ends far off the map (10^16 units out, ∞).
     let first = (from * pixels_per_t).max(distance - VIEW as f64).ceil();
     let last = f64::min(ray.t * pixels_per_t, first + 2.0 * VIEW as f64).floor();
     for step in first as usize..=last as usize {
@@ -380,7 +380,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     let eye = camera.position;
     for (primitive, material) in &scene.objects {
         match *primitive {
-            // The slice cuts a sphere in a circle around C - hN of radius √(r² - h²), h = (C - E).N.
+            // The slice cuts a sphere in a circle around C - hN, radius √(r² - h²), h = (C - E).N.
             Primitive::Sphere { center, radius } => {
                 let height = (center - eye).dot(up);
                 if height.abs() >= radius {
@@ -398,8 +398,8 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
                     draw_ray(frame, &ray, 0.0, to_rgb(material.color));
                 }
             }
-            // A plane is not drawn: the slice cuts it in a line right across the map, which would
-            // bury the rays; the sampled rays' dots show where they meet it.
+            // A plane is not drawn: the slice meets it in a line right across the map (or, level,
+            // not at all), which would bury the rays; the sampled rays' dots show where they hit.
             Primitive::Plane { .. } => {}
         }
     }
@@ -474,7 +474,7 @@ fn main() {
             }
             std::process::exit(1)
         });
-    window.set_target_fps(60); // at most 60 steps a second: it sleeps for the rest of each
+    window.set_target_fps(60); // at most 60 steps a second: a resting loop sleeps, not spins
     let scene = Scene::default();
     let mut camera = Camera::default();
     let mut frame = vec![BACKGROUND; WIDTH * VIEW];
@@ -485,10 +485,10 @@ fn main() {
         let keys = keys_down(&window, &mut stale);
         camera = moved(camera, &keys, last_step.elapsed().as_secs_f64());
         last_step = Instant::now();
-        // A window at rest sends no frame: the program and X took 0.9% of a core here, not 8%.
+        // A window at rest sends no frame: the program and X took under 1% of a core here, not 8%.
         let at_rest = shown == Some(camera);
         if at_rest {
-            window.update(); // update_with_buffer less the frame: one of the two each step
+            window.update(); // reads the keys and paces the loop: update_with_buffer less the frame
             continue;
         }
         render(&scene, &camera, &mut frame);

@@ -25,9 +25,12 @@ fn somewhere() -> Camera {
 /// A step of a tenth of a second.
 const DT: f64 = 0.1;
 
+/// How far two figures worked out in different orders may differ by rounding: far less than this.
+const ROUNDING: f64 = 1e-9;
+
 /// Are two points the same, give or take rounding?
 fn same(a: Vec3, b: Vec3) -> bool {
-    (a - b).length() < 1e-9
+    (a - b).length() < ROUNDING
 }
 
 #[test]
@@ -87,7 +90,7 @@ fn the_arrows_turn_left_and_right_and_tilt_up_and_down() {
     for (key, yaw, pitch) in cases {
         let after = moved(camera, &[key], DT);
         assert!(
-            (after.yaw - yaw).abs() < 1e-12 && (after.pitch - pitch).abs() < 1e-12,
+            (after.yaw - yaw).abs() < ROUNDING && (after.pitch - pitch).abs() < ROUNDING,
             "{key:?} for {DT} s should turn the camera to yaw {yaw:.3}, pitch {pitch:.3}, not \
              yaw {:.3}, pitch {:.3}",
             after.yaw,

@@ -428,7 +428,8 @@ fn a_blocked_shadow_ray_ends_at_what_blocks_it() {
     let after = blocker + to_light * 0.7; // 0.4 past it, on the light's side
     if let Err(seen) = drawn_near(&frame, before, BLOCKED_COLOR) {
         panic!(
-            "no BLOCKED_COLOR on the shadow ray before the ball that blocks it, at {before:?}: {seen}"
+            "no BLOCKED_COLOR on the shadow ray before the ball that blocks it, at {before:?}: \
+             {seen}"
         );
     }
     assert!(

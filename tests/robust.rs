@@ -242,10 +242,10 @@ fn a_hit_is_the_nearest_root_in_front_of_the_ray() {
         let direction = center + random.point(radius * 1.5) - origin;
         let unit = direction.normalize();
         let ray = Ray::new(origin, direction, f64::INFINITY);
-        let sphere = Primitive::Sphere { center, radius };
+        let ball = Primitive::Sphere { center, radius };
         let expected = expected_sphere_hit(origin, unit, center, radius);
         assert_hit(
-            sphere.intersect(&ray),
+            ball.intersect(&ray),
             expected,
             &format!("case {case}, a sphere"),
         );
@@ -314,7 +314,7 @@ fn a_floor_hit_10_to_the_19_units_out_has_the_floors_colour() {
     let color = scene.trace(ray, 0);
     let expected = WHITE * AMBIENT;
     assert!(
-        (color - expected).length() < 1e-9,
+        (color - expected).length() < ROUNDING,
         "the far floor should show {expected:?}, an even square in the ambient light, not {color:?}"
     );
 }
@@ -337,6 +337,10 @@ fn cameras_on_surfaces_and_far_away_give_colours_from_0_to_1() {
         assert_valid_rays(&scene, &camera_at(position, yaw, pitch), case);
     }
 }
+
+/// How near 1 a fully lit white surface must come out: rounding tilts L off N by far less, and a
+/// shadow ray that hit the plane it leaves would give AMBIENT, 0.1.
+const FULLY_LIT: f64 = 1e-3;
 
 #[test]
 fn far_away_a_ray_leaving_a_plane_does_not_hit_it_again() {
@@ -367,7 +371,7 @@ fn far_away_a_ray_leaving_a_plane_does_not_hit_it_again() {
             "case {case}, {far:.1e} out: the mirror ray hit the plane it left ({mirrored:?})"
         );
         assert!(
-            (lit.x - 1.0).abs() < 1e-3,
+            (lit.x - 1.0).abs() < FULLY_LIT,
             "case {case}, {far:.1e} out: the shadow ray hit the plane it left ({lit:?})"
         );
     }

@@ -1,5 +1,5 @@
-//! The 3D view, the lecture's steps 1 to 9: camera, intersections, shading, shadows, the
-//! checkerboard and reflections, each checked on a pixel that the test works out itself.
+//! The 3D view, the assignment's steps 1 to 6, 8 and 9: camera, intersections, shading, shadows,
+//! the checkerboard and reflections, each checked on a pixel that the test works out itself.
 #[allow(dead_code)]
 #[path = "../src/main.rs"]
 mod raytracer;
@@ -382,7 +382,7 @@ fn turning_the_camera_left_brings_a_ball_on_the_left_into_view() {
     let ahead = rgb(&frame_of(&scene, &Camera::default()), where_seen);
     assert!(
         !is_red(ahead),
-        "not turned, the ball on the left should be out of view"
+        "not turned, the ball on the left should be out of view, yet {where_seen:?} shows {ahead:?}"
     );
 }
 
@@ -402,7 +402,7 @@ fn tilting_the_camera_up_brings_a_ball_above_into_view() {
     let level = rgb(&frame_of(&scene, &Camera::default()), where_seen);
     assert!(
         !is_red(level),
-        "not tilted, the ball above should be out of view"
+        "not tilted, the ball above should be out of view, yet {where_seen:?} shows {level:?}"
     );
 }
 
@@ -420,24 +420,29 @@ fn moving_the_camera_moves_the_view() {
     let before = rgb(&frame_of(&scene, &Camera::default()), middle);
     assert!(
         !is_red(before),
-        "from the start, the middle should not show the ball"
+        "from the start, the middle should not show the ball, yet it shows {before:?}"
     );
 }
 
 #[test]
 fn a_camera_inside_a_sphere_sees_its_inside() {
+    // From the centre of a white mirror ball lit from outside, every ray meets its inside, which
+    // faces away from the light: each bounce, and so each pixel, shows the ambient share alone. A
+    // surface seen from the wrong side would send its mirror rays out to the floor and the sky.
     let center = vec3(0.3, 0.0, -4.5);
     let scene = scene_of(
         vec![checkered_floor(), sphere(center, 1.0, mirror(WHITE, 0.85))],
         vec3(-3.0, 5.0, 1.0),
     );
     let frame = frame_of(&scene, &camera_at(center, 0.0, 0.0));
+    let expected = bytes(WHITE * AMBIENT);
     for y in (0..VIEW).step_by(EVERY) {
         for x in (0..VIEW).step_by(EVERY) {
             let seen = rgb(&frame, (x, y));
             assert!(
-                seen != bytes(SKY),
-                "from inside the mirror ball, pixel {x}, {y} shows the sky"
+                seen == expected,
+                "from inside the mirror ball, pixel {x}, {y} shows {seen:?}, not the inside's \
+                 ambient {expected:?}"
             );
         }
     }

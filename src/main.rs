@@ -196,7 +196,7 @@ impl Default for Scene {
             ball(vec3(0.3, 0.0, -4.5), 1.0, white, 0.85), // centre, radius 1, white, mirror 0.85
             ball(vec3(-2.0, -0.2, -4.2), 0.8, vec3(0.9, 0.2, 0.2), 0.0), // radius 0.8, red, matte
             ball(vec3(1.9, -0.4, -3.4), 0.6, vec3(0.2, 0.8, 0.3), 0.0), // radius 0.6, green, matte
-            ball(vec3(-0.9, -0.45, -2.6), 0.55, vec3(0.2, 0.4, 0.9), 0.0), // 0.55, blue, matte
+            ball(vec3(-0.9, -0.45, -2.6), 0.55, vec3(0.2, 0.4, 0.9), 0.0), // radius 0.55, blue, matte
         ];
         Scene {
             objects,
@@ -280,7 +280,7 @@ impl Scene {
         let color = hit.material.color * brightness;
         let reflectivity = hit.material.reflectivity;
         if reflectivity <= 0.0 || depth >= MAX_DEPTH {
-            return color; // at MAX_DEPTH a mirror too: no mirror ray, only its own colour
+            return color; // the recursion must end: at MAX_DEPTH even a mirror shows its own colour
         }
         color * (1.0 - reflectivity)
             + self.trace(hit.mirror_ray(ray.direction), depth + 1) * reflectivity
@@ -480,7 +480,7 @@ fn main() {
     let mut frame = vec![BACKGROUND; WIDTH * VIEW];
     let mut shown = None; // the camera whose frame is on screen
     let mut stale = Vec::new(); // see keys_down
-    let mut last_step = Instant::now();
+    let mut last_step = Instant::now(); // the camera moves by speed × each step's time
     while window.is_open() && !window.is_key_down(Key::Escape) {
         let keys = keys_down(&window, &mut stale);
         camera = moved(camera, &keys, last_step.elapsed().as_secs_f64());

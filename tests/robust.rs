@@ -269,10 +269,6 @@ fn odd_scenes_give_colours_from_0_to_1() {
         ("no objects", vec![]),
         ("only a floor", vec![checkered_floor()]),
         (
-            "a sphere of radius 0",
-            vec![sphere(vec3(0.0, 0.0, -3.0), 0.0, matte(WHITE))],
-        ),
-        (
             "a huge sphere, its near side 5 ahead",
             vec![sphere(vec3(0.0, 0.0, -huge - 5.0), huge, matte(WHITE))],
         ),

@@ -134,7 +134,7 @@ pub enum Primitive {
 pub struct Material {
     pub color: Vec3,
     pub reflectivity: f64, // 0 is matte, 1 a perfect mirror
-    pub checkered: bool,   // the checkerboard of unit squares on the floor
+    pub checkered: bool,   // a checkerboard of unit squares in x and z, as on the floor
 }
 
 impl Primitive {

@@ -26,18 +26,22 @@ fn valid(color: Vec3) -> bool {
         .all(|c| (0.0..=1.0 + ROUNDING).contains(c))
 }
 
-/// The rays traced through each pose's screen: 8 x 9 of them, on prime strides so that they do
-/// not line up with the checkerboard or the map.
+/// The pixels whose rays are traced from each pose: 8 x 9 of them at a VIEW of 512, on prime
+/// strides so that they do not line up with the checkerboard or the map.
+fn sample_pixels() -> impl Iterator<Item = (usize, usize)> {
+    (0..VIEW)
+        .step_by(73)
+        .flat_map(|x| (0..VIEW).step_by(61).map(move |y| (x, y)))
+}
+
 fn assert_valid_rays(scene: &Scene, camera: &Camera, case: &str) {
-    for x in (0..VIEW).step_by(73) {
-        for y in (0..VIEW).step_by(61) {
-            let ray = camera.primary_ray(x as f64 + 0.5, y as f64 + 0.5);
-            let color = scene.trace(ray, 0);
-            assert!(
-                valid(color),
-                "{case}: pixel {x}, {y} is not a colour from 0 to 1: {color:?}"
-            );
-        }
+    for (x, y) in sample_pixels() {
+        let ray = camera.primary_ray(x as f64 + 0.5, y as f64 + 0.5);
+        let color = scene.trace(ray, 0);
+        assert!(
+            valid(color),
+            "{case}: pixel {x}, {y} is not a colour from 0 to 1: {color:?}"
+        );
     }
 }
 
@@ -127,15 +131,13 @@ fn the_demo_renders_from_any_pose_with_no_panic_and_no_nan() {
         if seed < 5 {
             frame_of(&scene, &camera);
         }
-        for x in (0..VIEW).step_by(73) {
-            for y in (0..VIEW).step_by(61) {
-                let color = scene.trace(camera.primary_ray(x as f64 + 0.5, y as f64 + 0.5), 0);
-                let numbers = !(color.x.is_nan() || color.y.is_nan() || color.z.is_nan());
-                assert!(
-                    numbers,
-                    "the demo, seed {seed}, pixel {x}, {y}: {color:?} from {camera:?}"
-                );
-            }
+        for (x, y) in sample_pixels() {
+            let color = scene.trace(camera.primary_ray(x as f64 + 0.5, y as f64 + 0.5), 0);
+            let numbers = !(color.x.is_nan() || color.y.is_nan() || color.z.is_nan());
+            assert!(
+                numbers,
+                "the demo, seed {seed}, pixel {x}, {y}: {color:?} from {camera:?}"
+            );
         }
     }
 }
@@ -213,12 +215,14 @@ fn expected_plane_hit(origin: Vec3, unit: Vec3, normal: Vec3, offset: f64) -> Ex
     }
 }
 
+const ROOT_SLACK: f64 = 1e-6;
+
 fn assert_hit(found: Option<f64>, expected: Expected, case: &str) {
     match expected {
-        // Rounding moves a root by far less than a millionth of it; the near and far roots are
-        // at least 6 x 10^-5 apart here, so the wrong one fails.
+        // Rounding moves a root by far less than ROOT_SLACK of it (or of 1); the near and far
+        // roots are at least 6 x 10^-5 apart here, so the wrong one fails.
         Expected::Hit(root) => assert!(
-            found.is_some_and(|t| (t - root).abs() < 1e-6 * root.max(1.0)),
+            found.is_some_and(|t| (t - root).abs() < ROOT_SLACK * root.max(1.0)),
             "{case}: the nearest hit in front is at t = {root}, intersect found {found:?}"
         ),
         Expected::Miss => assert_eq!(found, None, "{case}: the ray misses, intersect found a hit"),

@@ -26,6 +26,7 @@ impl fmt::Debug for Camera {
 
 /// The figures the README gives, which the tests hold the program to.
 pub const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
+pub const ODD_SQUARE: f64 = 0.25; // the floor's odd squares show a quarter of that light
 pub const SCREEN_DISTANCE: f64 = 1.0; // the screen is 1 ahead of the eye, 2 wide and 2 high
 
 pub const SKY: Vec3 = vec3(0.4, 0.6, 1.0);
@@ -155,7 +156,8 @@ pub fn project(camera: &Camera, point: Vec3) -> (usize, usize) {
 }
 
 /// Where a ray O + tD from outside a sphere first meets it, by the quadratic |O + tD - C|² = r²:
-/// the near root, if it is in front.
+/// the near root, if it is in front. D is unit, so the quadratic's a is 1, and with b halved its
+/// roots are t = -b/2 ± √((b/2)² - c).
 pub fn ray_sphere(origin: Vec3, direction: Vec3, center: Vec3, radius: f64) -> Option<Vec3> {
     let d = direction.normalize();
     let oc = origin - center;
@@ -166,6 +168,20 @@ pub fn ray_sphere(origin: Vec3, direction: Vec3, center: Vec3, radius: f64) -> O
     }
     let t = -half_b - discriminant.sqrt();
     (t > 0.0).then(|| origin + d * t)
+}
+
+/// The ray through the centre of the 3D view's pixel (x, y): D = p(u, v) - E on the slide's screen.
+pub fn pixel_direction(camera: &Camera, (x, y): (usize, usize)) -> Vec3 {
+    let (view, right, up) = camera_axes(camera);
+    let across = (x as f64 + 0.5) / HALF_VIEW - 1.0;
+    let upward = 1.0 - (y as f64 + 0.5) / HALF_VIEW;
+    view * SCREEN_DISTANCE + right * across + up * upward
+}
+
+/// Where the ray through the 3D view's pixel (x, y) meets the floor: t = (FLOOR_Y - E.y) / D.y.
+pub fn floor_seen(camera: &Camera, pixel: (usize, usize)) -> Vec3 {
+    let d = pixel_direction(camera, pixel);
+    camera.position + d * ((FLOOR_Y - camera.position.y) / d.y)
 }
 
 /// The map's sampled rays: through every 10th column's centre on the screen's middle row.
@@ -180,7 +196,7 @@ pub fn sampled_directions(camera: &Camera) -> Vec<Vec3> {
 /// The slide's checkerboard F for unit squares (no 2), with floor: is the floor square under this
 /// point an odd one?
 pub fn odd_square(point: Vec3) -> bool {
-    (point.x.floor() as i64 + point.z.floor() as i64) & 1 == 1
+    ((point.x.floor() as i64 + point.z.floor() as i64) & 1) == 1
 }
 
 /// Does a floor point's green byte show a dark square? Dark is under half of what a lit white even

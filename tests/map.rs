@@ -19,18 +19,6 @@ use scenes::*;
 const MAP_SIDE: f64 = VIEW as f64 / MAP_SCALE;
 /// The light's and the eye's markers are squares 7 map pixels wide, as the README says.
 const MARKER_REACH: i32 = 3;
-/// The legend's colours by name, as the failure messages call them.
-const LEGEND: [(&str, u32); 8] = [
-    ("BACKGROUND", BACKGROUND),
-    ("CAMERA_COLOR", CAMERA_COLOR),
-    ("RAY_COLOR", RAY_COLOR),
-    ("MISS_COLOR", MISS_COLOR),
-    ("LIGHT_COLOR", LIGHT_COLOR),
-    ("SHADOW_COLOR", SHADOW_COLOR),
-    ("BLOCKED_COLOR", BLOCKED_COLOR),
-    ("MIRROR_COLOR", MIRROR_COLOR),
-];
-
 /// The map pixel over a world point's x and z: x to the right, -z up, from MAP_CORNER.
 fn map_pixel(frame: &[u32], point: Vec3) -> u32 {
     let column = ((point.x - MAP_CORNER.x) * MAP_SCALE) as usize;
@@ -110,14 +98,6 @@ fn square_at(frame: &[u32], point: Vec3, reach: i32, color: u32) -> Result<(), S
     } else {
         Err(format!("there: {}", named(&near)))
     }
-}
-
-/// The right half of a frame: the map's pixels, row by row.
-fn map_of(frame: &[u32]) -> Vec<u32> {
-    frame
-        .chunks(WIDTH)
-        .flat_map(|row| row[VIEW..].to_vec())
-        .collect()
 }
 
 /// Two poses: the start, and one moved, turned and tilted.

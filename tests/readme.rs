@@ -7,6 +7,9 @@
 #[path = "../src/main.rs"]
 mod raytracer;
 #[allow(dead_code)]
+#[path = "support/scenes.rs"]
+mod scenes;
+#[allow(dead_code)]
 #[path = "support/tokens.rs"]
 mod tokens;
 #[allow(dead_code)]
@@ -14,6 +17,7 @@ mod tokens;
 mod vision;
 
 use raytracer::*;
+use scenes::{LEGEND, map_of};
 use std::fs::{self, File};
 use std::io::BufReader;
 
@@ -107,26 +111,6 @@ fn the_readme_pictures_are_the_demos_frames() {
 /// How to bring a stale picture up to date.
 const UPDATE: &str = "If the change is meant, write the pictures anew with `UPDATE_PICTURE=1 cargo \
                       test --test readme -- --ignored` and look at them before committing them.";
-
-/// The legend's colours by name, as the README's table lists them.
-const LEGEND: [(&str, u32); 8] = [
-    ("BACKGROUND", BACKGROUND),
-    ("SHADOW_COLOR", SHADOW_COLOR),
-    ("BLOCKED_COLOR", BLOCKED_COLOR),
-    ("MIRROR_COLOR", MIRROR_COLOR),
-    ("RAY_COLOR", RAY_COLOR),
-    ("MISS_COLOR", MISS_COLOR),
-    ("LIGHT_COLOR", LIGHT_COLOR),
-    ("CAMERA_COLOR", CAMERA_COLOR),
-];
-
-/// The right half of a frame: the map's pixels, row by row.
-fn map_of(frame: &[u32]) -> Vec<u32> {
-    frame
-        .chunks(WIDTH)
-        .flat_map(|row| row[VIEW..].to_vec())
-        .collect()
-}
 
 /// The demo's balls, each by its centre, and their outlines' colours.
 fn demo_balls() -> Vec<(String, u32)> {

@@ -205,3 +205,23 @@ pub fn is_dark(green: u32, point: Vec3, light: Vec3) -> bool {
     let up = vec3(0.0, 1.0, 0.0);
     green < byte(WHITE.y * lit_share(point, up, light)) / 2
 }
+
+/// The legend's colours by name, as the README's table and the failure messages call them.
+pub const LEGEND: [(&str, u32); 8] = [
+    ("BACKGROUND", BACKGROUND),
+    ("CAMERA_COLOR", CAMERA_COLOR),
+    ("RAY_COLOR", RAY_COLOR),
+    ("MISS_COLOR", MISS_COLOR),
+    ("LIGHT_COLOR", LIGHT_COLOR),
+    ("SHADOW_COLOR", SHADOW_COLOR),
+    ("BLOCKED_COLOR", BLOCKED_COLOR),
+    ("MIRROR_COLOR", MIRROR_COLOR),
+];
+
+/// The right half of a frame: the map's pixels, row by row.
+pub fn map_of(frame: &[u32]) -> Vec<u32> {
+    frame
+        .chunks(WIDTH)
+        .flat_map(|row| row[VIEW..].to_vec())
+        .collect()
+}

@@ -150,9 +150,9 @@ impl Primitive {
                 }
                 ahead(-(ray.origin.dot(normal) + offset) / slant)
             }
-            // The slide's test: c = C - O, t = c.D, q = c - tD, p² = q.q; hits at t -/+
-            // sqrt(r² - p²), the far one from inside. Touching (p² = r²) misses, unlike the slide's
-            // p² > r², so that a radius-0 sphere is never hit (its normal would be 0 / 0).
+            // The slide's test: c = C - O, t = c.D, q = c - tD, p² = q.q; hits at t -/+ √(r² - p²),
+            // and from inside the far one (the camera may walk in). Touching (p² = r²), a hit by
+            // the slide's p² > r², misses: a radius-0 sphere (normal 0 / 0) is never hit.
             Primitive::Sphere { center, radius } => {
                 let c = center - ray.origin;
                 let t = c.dot(ray.direction);
@@ -248,7 +248,7 @@ impl Scene {
             Primitive::Sphere { center, .. } => (point - center).normalize(),
             Primitive::Plane { normal, .. } => normal,
         };
-        let facing = outward.dot(ray.direction) < 0.0; // two-sided: N faces the ray
+        let facing = outward.dot(ray.direction) < 0.0; // N faces the ray: seen from inside too
         let normal = if facing { outward } else { -outward };
         Some(Hit {
             point,
@@ -398,8 +398,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
                     draw_ray(frame, &ray, 0.0, to_rgb(material.color));
                 }
             }
-            // A plane is not drawn: the slice meets it in a line right across the map (or, level,
-            // not at all), which would bury the rays; the sampled rays' dots show where they hit.
+            // Not drawn: its line on the slice would bury the rays; the rays' dots show its hits.
             Primitive::Plane { .. } => {}
         }
     }
@@ -499,7 +498,8 @@ fn main() {
     }
 }
 
-/// Keys down, less any held since the window lost the focus: X never tells it they were let go.
+/// Keys down, less any held since the window lost the focus: X never tells it they were let go,
+/// and without this the camera would move on, and the window never rest, until pressed again.
 fn keys_down(window: &Window, stale: &mut Vec<Key>) -> Vec<Key> {
     let mut keys = window.get_keys();
     if !window.is_active() {

@@ -125,11 +125,13 @@ fn a_pair_of_opposite_keys_held_together_cancel_out() {
 
 #[test]
 fn tilting_stops_at_straight_up_and_straight_down() {
+    // Held for LONG_HOLD seconds, the tilt would reach 15 radians at TURN_SPEED: far past π/2.
+    const LONG_HOLD: f64 = 10.0;
     for (key, most) in [(Key::Up, FRAC_PI_2), (Key::Down, -FRAC_PI_2)] {
-        let pitch = moved(somewhere(), &[key], 10.0).pitch;
+        let pitch = moved(somewhere(), &[key], LONG_HOLD).pitch;
         assert!(
             pitch == most,
-            "{key:?} held for 10 s should stop the tilt at {most:.4} radians, not {pitch:.4}"
+            "{key:?} held for {LONG_HOLD} s should stop the tilt at {most:.4} radians, not {pitch:.4}"
         );
     }
 }

@@ -265,12 +265,12 @@ fn a_mirror_ball_reflects_the_checkered_floor_and_the_sky() {
     );
     let camera = Camera::default();
     let frame = frame_of(&scene, &camera);
-    // Every 4th pixel each way that sees the ball: its mirror ray goes up to the sky, or down to a
-    // floor square, which shows bright or dark unless the point is near a square's edge or in the
-    // ball's shadow.
+    // Every `EVERY`th pixel each way that sees the ball: its mirror ray goes up to the sky, or
+    // down to a floor square, which shows bright or dark unless the point is near a square's edge
+    // or in the ball's shadow.
     let near_edge = |w: f64| (w - w.round()).abs() < EDGE_BAND;
-    for y in (0..VIEW).step_by(4) {
-        for x in (0..VIEW).step_by(4) {
+    for y in (0..VIEW).step_by(EVERY) {
+        for x in (0..VIEW).step_by(EVERY) {
             let Some((point, direction)) = reflected_ray(camera.position, center, (x, y)) else {
                 continue;
             };
@@ -362,8 +362,8 @@ fn facing_mirrors_stop_after_the_readmes_five_bounces() {
     };
     let last = vec3(0.0, height, -0.1 - 0.2 * f64::from(BOUNCES));
     let expected = lit_share(last, normal, scene.light);
-    // Each bounce starts 10^-6 or so off its mirror, which moves the last point by about 10^-7;
-    // stopping a bounce early or late changes the brightness by 0.06 or more.
+    // Each bounce starts 10^-6 or so off its mirror, which moves the last point by about 10^-6 in
+    // all; stopping a bounce early or late changes the brightness by 0.06 or more.
     const BOUNCE_SLACK: f64 = 1e-5;
     assert!(
         (shown - expected).abs() < BOUNCE_SLACK,
@@ -460,8 +460,8 @@ fn moving_the_camera_moves_the_view() {
 fn a_camera_inside_a_sphere_sees_its_inside() {
     // From the centre of a white mirror ball lit from outside, every ray meets its inside, and the
     // ball's own wall stands between each point of it and the light: each bounce, and so each
-    // pixel, shows the ambient share alone. A
-    // surface seen from the wrong side would send its mirror rays out to the floor and the sky.
+    // pixel, shows the ambient share alone. A surface seen from the wrong side would send its
+    // mirror rays out to the floor and the sky.
     let center = vec3(0.3, 0.0, -4.5);
     let scene = scene_of(
         vec![checkered_floor(), sphere(center, 1.0, mirror(WHITE, 0.85))],

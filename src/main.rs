@@ -343,7 +343,8 @@ fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
     }
 }
 
-/// Draws p(t) for from <= t <= ray.t from above: a dot every map pixel along it, wherever its ends.
+/// Draws p(t) for from <= t <= ray.t from above: a dot every map pixel along it (rounding spreads
+/// the dots of a ray that starts more than 10^13 units out).
 fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
     let pixels_per_t = ray.direction.x.hypot(ray.direction.z) * MAP_SCALE; // along the map
     if pixels_per_t == 0.0 {
@@ -473,7 +474,7 @@ fn main() {
             }
             std::process::exit(1)
         });
-    window.set_target_fps(60); // at most 60 steps a second: a resting loop sleeps, not spins
+    window.set_target_fps(60); // 60 steps a second, not minifb's 250: at rest it mostly sleeps
     let scene = Scene::default();
     let mut camera = Camera::default();
     let mut frame = vec![BACKGROUND; WIDTH * VIEW];
@@ -498,8 +499,7 @@ fn main() {
     }
 }
 
-/// Keys down, less any held since the window lost the focus: X never tells it they were let go,
-/// and without this the camera would move on, and the window never rest, until pressed again.
+/// Keys down, less those held since the focus left (X never says they were let go): no drifting.
 fn keys_down(window: &Window, stale: &mut Vec<Key>) -> Vec<Key> {
     let mut keys = window.get_keys();
     if !window.is_active() {

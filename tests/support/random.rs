@@ -8,7 +8,8 @@ pub struct Random {
 
 impl Random {
     pub fn new(seed: u64) -> Random {
-        // Multiplying by 2^64 / φ (the golden ratio) spreads neighbouring seeds over all 64 bits.
+        // Multiplying by 2^64 / φ (the golden ratio) spreads neighbouring seeds over all 64 bits;
+        // the lowest bit set keeps the state off 0, where xorshift would stay for ever.
         Random {
             state: seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1,
         }

@@ -428,7 +428,8 @@ fn a_blocked_shadow_ray_ends_at_what_blocks_it() {
 
 #[test]
 fn a_mirror_ray_leaves_each_sampled_hit_on_a_mirror_along_r() {
-    // A mirror ball ahead, the light above the eye: from each sampled ray's hit its mirror ray
+    // A mirror ball ahead, the light straight above its centre: the slice's hits face sideways,
+    // away from it, so no shadow ray is drawn. From each sampled ray's hit its mirror ray
     // R = D - 2(D.N)N runs on, drawn at the first point along R, from 0.3 units on, that no
     // sampled ray is drawn over (they are drawn on top: a ray that hits the ball head on comes
     // back along itself).
@@ -436,7 +437,7 @@ fn a_mirror_ray_leaves_each_sampled_hit_on_a_mirror_along_r() {
     let center = vec3(0.5, 0.0, -5.0);
     let scene = scene_of(
         vec![sphere(center, 1.0, mirror(WHITE, 0.9))],
-        vec3(0.0, 20.0, 0.0),
+        center + vec3(0.0, 20.0, 0.0),
     );
     let frame = frame_of(&scene, &camera);
     let sampled: Vec<(Vec3, Option<Vec3>)> = sampled_directions(&camera)

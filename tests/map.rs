@@ -125,14 +125,15 @@ fn the_eye_is_a_pink_square_7_map_pixels_wide() {
 
 #[test]
 fn the_screens_middle_row_is_a_pink_line_from_c_minus_right_to_c_plus_right() {
-    // C = E + dV. The row is drawn a quarter and three quarters of the way along, and not 3 map
-    // pixels past either end.
+    // C = E + dV. The row is drawn 3 map pixels from either end and halfway to it from C, and not
+    // 3 map pixels past either end.
     let scene = scene_of(vec![], vec3(0.0, 5.0, 2.0));
     for camera in two_poses() {
         let frame = frame_of(&scene, &camera);
         let (view, right, _) = camera_axes(&camera);
         let middle = camera.position + view * SCREEN_DISTANCE;
-        for along in [-0.5, 0.5] {
+        let near_end = 1.0 - 3.0 / MAP_SCALE;
+        for along in [-near_end, -0.5, 0.5, near_end] {
             let on_row = middle + right * along;
             if let Err(seen) = drawn_near(&frame, on_row, CAMERA_COLOR) {
                 panic!("{camera:?}: no CAMERA_COLOR on the screen's row at {on_row:?}, {seen}");

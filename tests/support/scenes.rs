@@ -27,6 +27,7 @@ impl fmt::Debug for Camera {
 /// The figures the README gives, which the tests hold the program to.
 pub const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
 pub const ODD_SQUARE: f64 = 0.25; // the floor's odd squares show a quarter of that light
+pub const SAMPLED_EVERY: usize = 10; // the map shows every 10th ray of the screen's middle row
 pub const SCREEN_DISTANCE: f64 = 1.0; // the screen is 1 ahead of the eye, 2 wide and 2 high
 
 pub const SKY: Vec3 = vec3(0.4, 0.6, 1.0);
@@ -188,7 +189,7 @@ pub fn floor_seen(camera: &Camera, pixel: (usize, usize)) -> Vec3 {
 pub fn sampled_directions(camera: &Camera) -> Vec<Vec3> {
     let (view, right, _) = camera_axes(camera);
     (0..VIEW)
-        .step_by(10)
+        .step_by(SAMPLED_EVERY)
         .map(|x| view * SCREEN_DISTANCE + right * ((x as f64 + 0.5) / HALF_VIEW - 1.0))
         .collect()
 }

@@ -347,8 +347,8 @@ fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
 /// the dots of a ray that starts more than 10^13 units out).
 fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
     let pixels_per_t = ray.direction.x.hypot(ray.direction.z) * MAP_SCALE; // along the map
-    if pixels_per_t == 0.0 {
-        return; // straight up or down: the dot at its start shows it
+    if pixels_per_t == 0.0 || pixels_per_t.is_nan() {
+        return; // 0 straight up or down (its start's dot shows it), NaN for a chord of length 0
     }
     let start = ray.origin - MAP_CORNER - vec3(0.5, 0.0, 0.5) * MAP_SIDE; // from the map's middle
     let distance = start.x.hypot(start.z) * MAP_SCALE; // p(0)'s, in map pixels
@@ -378,12 +378,11 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
         row[VIEW..].fill(BACKGROUND);
     }
     let (view, right, up) = camera.axes(); // the slice holds V and right; up is its normal
-    let eye = camera.position;
     for (primitive, material) in &scene.objects {
         match *primitive {
             // The slice cuts a sphere in a circle around C - hN, radius √(r² - h²), h = (C - E).N.
             Primitive::Sphere { center, radius } => {
-                let height = (center - eye).dot(up);
+                let height = (center - camera.position).dot(up);
                 if height.abs() >= radius {
                     continue;
                 }
@@ -426,12 +425,12 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
         let screen = SCREEN_DISTANCE / ray.direction.dot(view);
         follow(frame, scene, ray, screen, RAY_COLOR, MISS_COLOR);
     }
-    let row_start = eye + view * SCREEN_DISTANCE - right; // the screen's middle row: C - right
+    let row_start = camera.position + view * SCREEN_DISTANCE - right; // the middle row: C - right
     draw_ray(frame, &Ray::new(row_start, right, 2.0), 0.0, CAMERA_COLOR); // to C + right
     // The light's marker, then the eye's; off the map, each whole on the edge nearest to it.
     let inset = (MARKER_RADIUS as f64 + 0.5) / MAP_SCALE; // to its middle pixel's middle
     let snap = |w: f64, corner: f64| w.clamp(corner + inset, corner + MAP_SIDE - inset);
-    for (point, color) in [(scene.light, LIGHT_COLOR), (eye, CAMERA_COLOR)] {
+    for (point, color) in [(scene.light, LIGHT_COLOR), (camera.position, CAMERA_COLOR)] {
         let middle = vec3(
             snap(point.x, MAP_CORNER.x),
             0.0,
@@ -485,9 +484,8 @@ fn main() {
         let keys = keys_down(&window, &mut stale);
         camera = moved(camera, &keys, last_step.elapsed().as_secs_f64());
         last_step = Instant::now();
-        // A window at rest sends no frame: the program and X took under 1% of a core here, not 8%.
-        let at_rest = shown == Some(camera);
-        if at_rest {
+        // At rest nothing is rendered or sent: under 1% of a core with X here, re-sending alone 8%.
+        if shown == Some(camera) {
             window.update(); // reads the keys and paces the loop: update_with_buffer less the frame
             continue;
         }

@@ -635,7 +635,7 @@ fn from_far_off_the_map_the_sampled_rays_still_cross_it() {
 }
 
 #[test]
-fn a_huge_spheres_outline_stays_within_a_pixel_of_its_circle() {
+fn every_point_of_a_huge_spheres_circle_has_its_outline_within_a_pixel() {
     // A ball of radius 35 cut through its centre, the eye looking away from it, the light off
     // the map: every point of the circle 0.1 units or more inside the map has the outline within
     // a map pixel of it.

@@ -85,7 +85,7 @@ fn random_scene(random: &mut Random) -> Scene {
             let material = Material {
                 color,
                 reflectivity: random.pick(&[0.0, part_mirror, 1.0]),
-                checkered: random.next() < 0.5,
+                checkered: random.next() < 0.5, // half of them
             };
             (primitive, material)
         })

@@ -71,7 +71,7 @@ impl Ray {
     pub fn new(origin: Vec3, direction: Vec3, t: f64) -> Ray {
         Ray {
             origin,
-            direction: direction.normalize(), // of any length but 0, it is normalized here
+            direction: direction.normalize(), // normalized here; of length 0 only in an empty chord
             t,
         }
     }
@@ -347,8 +347,8 @@ fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
 /// the dots of a ray that starts more than 10^13 units out).
 fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
     let pixels_per_t = ray.direction.x.hypot(ray.direction.z) * MAP_SCALE; // along the map
-    if pixels_per_t == 0.0 || pixels_per_t.is_nan() {
-        return; // 0 straight up or down (its start's dot shows it), NaN for a chord of length 0
+    if pixels_per_t == 0.0 || ray.t == 0.0 {
+        return; // straight up or down (its start's dot shows it), or no length: nothing to walk
     }
     let start = ray.origin - MAP_CORNER - vec3(0.5, 0.0, 0.5) * MAP_SIDE; // from the map's middle
     let distance = start.x.hypot(start.z) * MAP_SCALE; // p(0)'s, in map pixels

@@ -349,7 +349,8 @@ fn every_tenth_ray_is_drawn_and_none_between() {
     let frame = frame_of(&scene_of(vec![], vec3(0.0, 5.0, 2.0)), &camera);
     let t = 6.0;
     for pair in sampled_directions(&camera).windows(2) {
-        let (left, right) = (pair[0].normalize(), pair[1].normalize());
+        let left = pair[0].normalize();
+        let right = pair[1].normalize();
         let between = (left + right).normalize() * t;
         if !inside_map(between, 0.1) {
             // (0.1 units inside the map, so that the pixel looked at is on it)
@@ -381,7 +382,8 @@ fn a_shadow_ray_runs_from_a_hit_to_the_light_and_stops_there() {
     // A ball ahead, the light to its left: the leftmost sampled hit's shadow ray runs to the
     // light, drawn in SHADOW_COLOR half way, and not on past the light.
     let camera = Camera::default();
-    let (center, radius) = (vec3(1.5, 0.0, -6.0), 1.0);
+    let center = vec3(1.5, 0.0, -6.0);
+    let radius = 1.0;
     let light = vec3(-3.0, 0.0, -3.0);
     let frame = frame_of(
         &scene_of(vec![sphere(center, radius, matte(RED))], light),
@@ -402,7 +404,8 @@ fn a_shadow_ray_runs_from_a_hit_to_the_light_and_stops_there() {
 #[test]
 fn a_blocked_shadow_ray_ends_at_what_blocks_it() {
     let camera = Camera::default();
-    let (target, radius) = (vec3(1.5, 0.0, -6.0), 1.0);
+    let target = vec3(1.5, 0.0, -6.0);
+    let radius = 1.0;
     let light = vec3(-3.0, 0.0, -3.0);
     let hit = leftmost_hit(&camera, target, radius);
     let to_light = (light - hit).normalize();

@@ -202,6 +202,16 @@ fn the_readme_states_the_size_of_main_rs_within_its_budget() {
     let token_count = tokens::count_tokens(&tokens::strip_comments(&source));
     let lines = tokens::non_blank_lines(&source);
     println!("src/main.rs: {token_count} tokens, {lines} non-blank lines");
+    let budget = format!(
+        "within its budget of {},{:03} and {MOST_LINES}",
+        MOST_TOKENS / 1000,
+        MOST_TOKENS % 1000
+    );
+    assert!(
+        readme.contains(&budget),
+        "The README's Size section should say \"{budget}\", the budget that tests/readme.rs \
+         (MOST_TOKENS, MOST_LINES) holds src/main.rs to: bring the two together."
+    );
     // The README's word after the number, the thing counted, the count and its budget.
     for (word, what, counted, most) in [
         ("tokens", "tokens", token_count, MOST_TOKENS),

@@ -54,7 +54,7 @@ fn demo_like() -> Scene {
             sphere(vec3(0.3, 0.0, -4.5), 1.0, mirror(WHITE, 0.85)),
             sphere(vec3(-2.0, -0.2, -4.2), 0.8, matte(RED)),
             sphere(vec3(1.9, -0.4, -3.4), 0.6, matte(PURE_GREEN)),
-            sphere(vec3(-0.9, -0.45, -2.6), 0.55, matte(vec3(0.2, 0.4, 0.9))),
+            sphere(vec3(-0.9, -0.45, -2.6), 0.55, matte(vec3(0.2, 0.4, 0.9))), // blue
         ],
         vec3(-3.0, 5.0, 1.0),
     )

@@ -178,8 +178,9 @@ fn only_what_lies_between_a_point_and_the_light_shades_it() {
         &scene_of(vec![checkered_floor(), beyond, beside], light),
         &camera,
     );
-    let point = project(&camera, vec3(0.5, FLOOR_Y, -3.5));
-    let (seen, expected) = (rgb(&with_balls, point), rgb(&alone, point));
+    let pixel = project(&camera, vec3(0.5, FLOOR_Y, -3.5));
+    let seen = rgb(&with_balls, pixel);
+    let expected = rgb(&alone, pixel);
     assert!(
         seen == expected,
         "a ball beyond the light or beside it changed the floor from {expected:?} to {seen:?}"

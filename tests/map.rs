@@ -523,9 +523,11 @@ fn the_sampled_rays_are_drawn_over_the_shadow_and_mirror_rays() {
     // A mirror ball and matte balls ahead, the light behind and above: many shadow and mirror
     // rays cross the sampled ones. Along each sampled ray, up to 2 map pixels before its hit,
     // under MOST_COVERED of the points show another colour than the ray's (black between its dots
-    // is allowed), and over LEAST_ON_RAY its own (90% today).
-    const MOST_COVERED: f64 = 0.02;
-    const LEAST_ON_RAY: f64 = 0.85;
+    // is allowed), and over LEAST_ON_RAY its own. Measured at 56 VIEWs from 96 to 1100: at most
+    // 2.1% covered and at least 83% on the ray; with the sampled rays drawn first, 4.9% to 12%
+    // covered.
+    const MOST_COVERED: f64 = 0.035;
+    const LEAST_ON_RAY: f64 = 0.75;
     let camera = Camera::default();
     let balls = [
         (vec3(0.3, 0.0, -4.5), 1.0, mirror(WHITE, 0.85)),

@@ -2,7 +2,8 @@
 //! demo balls' colours, and the size of `src/main.rs`. These do not ask whether the tracer is right
 //! (the other tests do), but whether the README still tells the truth: a student's own scene makes
 //! them fail, and that is fine. They are ignored by `cargo test`; CI runs them with
-//! `cargo test -- --include-ignored`, and each failure says what to bring up to date.
+//! `cargo test --no-fail-fast -- --include-ignored`, and each failure says what to bring up to
+//! date.
 #[allow(dead_code)]
 #[path = "../src/main.rs"]
 mod raytracer;
@@ -128,7 +129,8 @@ fn demo_balls() -> Vec<(String, u32)> {
 
 #[test]
 #[ignore = "guards the README's legend, not the tracer: run with --include-ignored"]
-fn every_legend_colour_and_ball_shows_in_a_readme_picture() {
+fn every_legend_colour_and_ball_shows_from_the_readme_pictures_poses() {
+    // The demo's frames from the pictures' poses: the picture test holds the pictures to them.
     let mut shown = Vec::new();
     for (_, camera) in readme_pictures() {
         shown.extend(map_of(&demo_frame(&camera)));

@@ -220,16 +220,14 @@ fn the_floors_odd_squares_show_a_quarter_of_the_light() {
     for x in [-0.5, 0.5] {
         let pixel = project(&camera, vec3(x, FLOOR_Y, -0.5));
         let point = floor_seen(&camera, pixel);
-        let (odd, square) = if odd_square(point) {
-            ("odd", ODD_SQUARE)
-        } else {
-            ("even", 1.0)
-        };
+        let odd = odd_square(point);
+        let square = if odd { ODD_SQUARE } else { 1.0 };
         let green = rgb(&frame, pixel)[1];
         let expected = byte(WHITE.y * lit_share(point, up, light) * square);
         assert!(
             green.abs_diff(expected) <= SHADING_SLACK,
-            "the {odd} square around x = {x}, z = -0.5: green {green}, expected {expected}"
+            "the {} square around x = {x}, z = -0.5: green {green}, expected {expected}",
+            if odd { "odd" } else { "even" }
         );
     }
 }
@@ -337,18 +335,19 @@ fn facing_mirrors_stop_after_the_readmes_five_bounces() {
     // between them. A ray bouncing between them brings back the colour of the surface where the
     // recursion stops, lit as that point is lit: bounce 0 is the floor, so after an odd number of
     // bounces it ends on the ceiling and after an even one on the floor.
+    const CEILING_Y: f64 = 1.0;
     let floor = Primitive::Plane {
         normal: vec3(0.0, 1.0, 0.0),
-        offset: 1.0,
+        offset: -FLOOR_Y, // y + 1 = 0
     };
     let ceiling = Primitive::Plane {
         normal: vec3(0.0, -1.0, 0.0),
-        offset: 1.0,
+        offset: CEILING_Y, // -y + 1 = 0
     };
     let scene = scene_of(
         vec![
-            (floor, mirror(vec3(1.0, 0.0, 0.0), 1.0)),
-            (ceiling, mirror(vec3(0.0, 0.0, 1.0), 1.0)),
+            (floor, mirror(PURE_RED, 1.0)),
+            (ceiling, mirror(PURE_BLUE, 1.0)),
         ],
         vec3(0.0, 0.0, -3.0),
     );
@@ -356,11 +355,13 @@ fn facing_mirrors_stop_after_the_readmes_five_bounces() {
     let ray = Ray::new(vec3(0.0, 0.0, 0.0), vec3(0.0, -1.0, -0.1), f64::INFINITY);
     let color = scene.trace(ray, 0);
     let on_ceiling = BOUNCES % 2 == 1;
-    let (height, normal, shown) = if on_ceiling {
-        (1.0, vec3(0.0, -1.0, 0.0), color.z)
+    let height = if on_ceiling { CEILING_Y } else { FLOOR_Y };
+    let normal = if on_ceiling {
+        vec3(0.0, -1.0, 0.0)
     } else {
-        (-1.0, vec3(0.0, 1.0, 0.0), color.x)
+        vec3(0.0, 1.0, 0.0)
     };
+    let shown = if on_ceiling { color.z } else { color.x }; // the blue ceiling's, the red floor's
     let last = vec3(0.0, height, -0.1 - 0.2 * f64::from(BOUNCES));
     let expected = lit_share(last, normal, scene.light);
     // Each bounce starts 10^-6 or so off its mirror, which moves the last point by about 10^-6 in

@@ -35,6 +35,7 @@ pub const WHITE: Vec3 = vec3(1.0, 1.0, 1.0);
 pub const RED: Vec3 = vec3(0.9, 0.1, 0.1);
 pub const PURE_RED: Vec3 = vec3(1.0, 0.0, 0.0); // its outline on the map is exactly 0xff0000
 pub const PURE_GREEN: Vec3 = vec3(0.0, 1.0, 0.0);
+pub const PURE_BLUE: Vec3 = vec3(0.0, 0.0, 1.0);
 pub const FLOOR_Y: f64 = -1.0;
 pub const HALF_VIEW: f64 = VIEW as f64 / 2.0; // the screen's middle, in pixels from an edge
 

@@ -99,8 +99,8 @@ fn heading(yaw: f64, pitch: f64) -> Vec3 {
 }
 
 impl Camera {
-    /// V, right and up: the slide's camera matrix, whose columns turn its (1, 0, 0), (0, 1, 0) and
-    /// (0, 0, -1) into right, up and V, so that p0 = C + (-1, -1, 0) becomes C - right - up.
+    /// V, right and up: the slide's camera matrix [right | up | -V] turns its (1, 0, 0), (0, 1, 0)
+    /// and (0, 0, -1) into right, up and V, so that p0 = C + (-1, -1, 0) becomes C - right - up.
     fn axes(&self) -> (Vec3, Vec3, Vec3) {
         (
             heading(self.yaw, self.pitch),
@@ -402,7 +402,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
             Primitive::Plane { .. } => {}
         }
     }
-    // Through the middle row, v = 0.5, between the two middle pixel rows: the assignment's "y = 0".
+    // Through v = 0.5, between the middle pixel rows (on one for an odd VIEW): the slide's "y = 0".
     let sampled = || {
         (0..VIEW)
             .step_by(SAMPLED_EVERY)

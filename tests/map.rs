@@ -563,11 +563,13 @@ fn the_sampled_rays_are_drawn_over_the_shadow_and_mirror_rays() {
     let share = |count: i32| f64::from(count) / f64::from(checked);
     assert!(
         share(covered) < MOST_COVERED,
-        "{covered} of {checked} points along the sampled rays show another ray's colour on top"
+        "{covered} of {checked} points along the sampled rays show another ray's colour on top, \
+         over {MOST_COVERED} of them"
     );
     assert!(
         share(on_ray) > LEAST_ON_RAY,
-        "only {on_ray} of {checked} points along the sampled rays show their colour"
+        "only {on_ray} of {checked} points along the sampled rays show their colour, expected \
+         over {LEAST_ON_RAY} of them"
     );
 }
 
@@ -600,7 +602,7 @@ fn from_far_off_the_map_the_sampled_rays_still_cross_it() {
     // the map's bottom edge and run up to the ball, or, missing it, across the map to its top
     // edge. They are looked at `INSET` inside the map's edges, clear of the eye's marker there (7
     // map pixels wide), and `BEFORE` units before a hit's depth. (Of the rays that cross the map,
-    // 14 hit the ball and 10 miss it.)
+    // from the three distances together, 14 hit the ball and 10 miss it.)
     const INSET: f64 = 16.0 / MAP_SCALE; // 16 map pixels
     const BEFORE: f64 = 0.3;
     let center = vec3(0.0, 0.0, -5.0);

@@ -57,8 +57,8 @@ fn write_png(path: &str, rgb: &[u8]) {
 
 /// A PNG's size and its pixels as 8-bit RGB bytes.
 fn read_png(path: &str) -> ((u32, u32), Vec<u8>) {
-    let file =
-        File::open(path).unwrap_or_else(|_| panic!("the README's picture {path} is missing"));
+    let file = File::open(path)
+        .unwrap_or_else(|_| panic!("the README's picture {path} is missing. {UPDATE}"));
     let mut reader = png::Decoder::new(BufReader::new(file))
         .read_info()
         .expect("a PNG");
@@ -182,7 +182,7 @@ fn stated(readme: &str, what: &str) -> usize {
     let claim = "`src/main.rs` has ";
     let start = readme
         .find(claim)
-        .expect("the README's Size section says \"`src/main.rs` has ...\"");
+        .expect("the README's Size section should say \"`src/main.rs` has ...\": put it back");
     let after = &readme[start + claim.len()..];
     // Its first six words: "3,700 tokens and 472 non-blank lines".
     let words: Vec<&str> = after.split_whitespace().take(6).collect();
@@ -192,7 +192,9 @@ fn stated(readme: &str, what: &str) -> usize {
         .and_then(|i| words.get(i));
     number
         .and_then(|n| n.replace(',', "").parse().ok())
-        .unwrap_or_else(|| panic!("the README's Size section gives no number of {what}"))
+        .unwrap_or_else(|| {
+            panic!("the README's Size section gives no number of {what}: put it back")
+        })
 }
 
 #[test]

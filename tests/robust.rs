@@ -23,7 +23,7 @@ const ROUNDING: f64 = 1e-9;
 fn valid(color: Vec3) -> bool {
     [color.x, color.y, color.z]
         .iter()
-        .all(|c| (0.0..=1.0 + ROUNDING).contains(c))
+        .all(|c| !c.is_nan() && (0.0..=1.0 + ROUNDING).contains(c))
 }
 
 /// The pixels whose rays are traced from each pose: 8 x 9 of them at a VIEW of 512, on prime
@@ -136,7 +136,8 @@ fn the_demo_renders_from_any_pose_with_no_panic_and_no_nan() {
             let numbers = !(color.x.is_nan() || color.y.is_nan() || color.z.is_nan());
             assert!(
                 numbers,
-                "the demo, seed {seed}, pixel {x}, {y}: {color:?} from {camera:?}"
+                "the demo, seed {seed}, pixel {x}, {y}: every channel should be a number, not \
+                 {color:?} from {camera:?}"
             );
         }
     }

@@ -254,7 +254,7 @@ fn a_tilted_slice_outlines_the_spheres_it_cuts_and_no_others() {
         let cut_center = eye + view * 5.0 + right * 0.5 + up * height;
         let foot = cut_center - up * height;
         let circle = (1.0 - height * height).sqrt();
-        // Missed: at the eye's height, where a level plane would cut it, but 5 |sin pitch| >= 0.99
+        // Missed: at the eye's height, where a level plane would cut it, but 5 |sin pitch| >= 1.2
         // from the tilted plane, further than its radius 0.8.
         let level_view = vec3(-yaw.sin(), 0.0, -yaw.cos());
         let missed_center = eye + level_view * 5.0 - right * 2.5;
@@ -448,7 +448,8 @@ fn a_mirror_ray_leaves_each_sampled_hit_on_a_mirror_along_r() {
         .into_iter()
         .map(|d| (d.normalize(), ray_sphere(camera.position, d, center, 1.0)))
         .collect();
-    // Is a point within 2 map pixels of a sampled ray, as drawn from the screen to its hit?
+    // Is a point within 2 map pixels of a sampled ray, from t = d (at or before the screen) to its
+    // hit?
     let under_a_sampled_ray = |point: Vec3| {
         sampled.iter().any(|&(d, hit)| {
             let end = hit.map_or(f64::INFINITY, |hit| hit.length());
@@ -557,7 +558,7 @@ fn the_sampled_rays_are_drawn_over_the_shadow_and_mirror_rays() {
             } else if pixel != BACKGROUND {
                 covered += 1;
             }
-            t += 0.5 / MAP_SCALE;
+            t += 0.5 / MAP_SCALE; // every half map pixel
         }
     }
     let share = |count: i32| f64::from(count) / f64::from(checked);
@@ -598,11 +599,12 @@ fn with_a_level_camera_the_slice_never_meets_the_floor() {
 
 #[test]
 fn from_far_off_the_map_the_sampled_rays_still_cross_it() {
-    // The eye 20 to 40 units behind the map, a big ball ahead on it: the sampled rays come in over
-    // the map's bottom edge and run up to the ball, or, missing it, across the map to its top
-    // edge. They are looked at `INSET` inside the map's edges, clear of the eye's marker there (7
-    // map pixels wide), and `BEFORE` units before a hit's depth. (Of the rays that cross the map,
-    // from the three distances together, 14 hit the ball and 10 miss it.)
+    // The eye at z = 20 to 40, 17 to 37 units behind the map's bottom edge, a big ball ahead on the
+    // map: the sampled rays come in over the map's bottom edge and run up to the ball, or, missing
+    // it, across the map to its top edge. They are looked at `INSET` inside the map's edges, clear
+    // of the eye's marker there (7 map pixels wide), and `BEFORE` units before a hit's depth. (Of
+    // the rays that cross the map, from the three distances together, 14 hit the ball and 10 miss
+    // it.)
     const INSET: f64 = 16.0 / MAP_SCALE; // 16 map pixels
     const BEFORE: f64 = 0.3;
     let center = vec3(0.0, 0.0, -5.0);

@@ -94,7 +94,7 @@ pub struct Camera {
 
 /// The unit direction `yaw` radians left of -z about +y and `pitch` radians up from level.
 fn heading(yaw: f64, pitch: f64) -> Vec3 {
-    let level = pitch.cos(); // its level part's length, below 0 past straight up (for up)
+    let level = pitch.cos(); // the level part's scale, negative past straight up (for up)
     vec3(-yaw.sin() * level, pitch.sin(), -yaw.cos() * level)
 }
 

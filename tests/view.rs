@@ -188,12 +188,20 @@ fn only_what_lies_between_a_point_and_the_light_shades_it() {
     );
 }
 
+/// A light high above the floor: every floor point in view gets nearly all of it.
+const HIGH_LIGHT: Vec3 = vec3(0.0, 100.0, 0.0);
+
+/// The checkered floor alone under HIGH_LIGHT, seen from 2 units above it, looking down: the
+/// camera and its frame.
+fn floor_from_above() -> (Camera, Vec<u32>) {
+    let camera = camera_at(vec3(0.0, 1.0, 3.0), 0.0, -0.5);
+    let frame = frame_of(&scene_of(vec![checkered_floor()], HIGH_LIGHT), &camera);
+    (camera, frame)
+}
+
 #[test]
 fn the_floor_is_checkered_by_floor_x_plus_floor_z() {
-    let light = vec3(0.0, 100.0, 0.0);
-    let scene = scene_of(vec![checkered_floor()], light);
-    let camera = camera_at(vec3(0.0, 1.0, 3.0), 0.0, -0.5);
-    let frame = frame_of(&scene, &camera);
+    let (camera, frame) = floor_from_above();
     // Square centres on both sides of x = 0 and of z = 0.
     for x in [-1.5, -0.5, 0.5, 1.5] {
         for z in [-1.5, -0.5, 0.5, 1.5] {
@@ -201,7 +209,7 @@ fn the_floor_is_checkered_by_floor_x_plus_floor_z() {
             let green = rgb(&frame, project(&camera, point))[1];
             let odd = odd_square(point);
             assert!(
-                is_dark(green, point, light) == odd,
+                is_dark(green, point, HIGH_LIGHT) == odd,
                 "the square around x = {x}, z = {z} should be {} (green {green})",
                 if odd { "dark" } else { "bright" }
             );
@@ -213,10 +221,7 @@ fn the_floor_is_checkered_by_floor_x_plus_floor_z() {
 fn the_floors_odd_squares_show_a_quarter_of_the_light() {
     // Lit from high above, each square's centre shows the lit share of white, the odd ones a
     // quarter of it: ODD_SQUARE, the README's figure.
-    let light = vec3(0.0, 100.0, 0.0);
-    let scene = scene_of(vec![checkered_floor()], light);
-    let camera = camera_at(vec3(0.0, 1.0, 3.0), 0.0, -0.5);
-    let frame = frame_of(&scene, &camera);
+    let (camera, frame) = floor_from_above();
     let up = vec3(0.0, 1.0, 0.0);
     for x in [-0.5, 0.5] {
         let pixel = project(&camera, vec3(x, FLOOR_Y, -0.5));
@@ -224,7 +229,7 @@ fn the_floors_odd_squares_show_a_quarter_of_the_light() {
         let odd = odd_square(point);
         let square = if odd { ODD_SQUARE } else { 1.0 };
         let green = rgb(&frame, pixel)[1];
-        let expected = byte(WHITE.y * lit_share(point, up, light) * square);
+        let expected = byte(WHITE.y * lit_share(point, up, HIGH_LIGHT) * square);
         assert!(
             green.abs_diff(expected) <= SHADING_SLACK,
             "the {} square around x = {x}, z = -0.5: green {green}, expected {expected}",

@@ -1,5 +1,5 @@
 //! A Whitted-style ray tracer in one file; beside its 3D view, a top-down 2D slice of the scene.
-use minifb::{Key, Window, WindowOptions};
+use minifb::{Key, ScaleMode, Window, WindowOptions};
 use std::f64::consts::{FRAC_PI_2, TAU};
 use std::ops::{Add, Mul, Neg, Sub};
 use std::time::Instant;
@@ -440,7 +440,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     }
 }
 
-// Step 7, the controls: a step reads the keys, moves the camera, renders and shows if it moved.
+// Step 7, the controls: a step reads the keys, moves the camera, renders and shows.
 const MOVE_SPEED: f64 = 2.0; // units a second along each held key's direction
 const TURN_SPEED: f64 = 1.5; // radians a second
 
@@ -462,38 +462,48 @@ pub fn moved(mut camera: Camera, keys: &[Key], dt: f64) -> Camera {
     camera
 }
 
+// The window's own mechanics, which the lecture leaves to its template, each said where it is.
+const RESEND_SECONDS: f64 = 0.5; // at rest the frame is only sent again, twice a second
+
 fn main() {
     let title = "raytracer - W A S D R F move, arrows turn, Home: back to the start, Esc quits";
-    let mut window =
-        Window::new(title, WIDTH, VIEW, WindowOptions::default()).unwrap_or_else(|error| {
-            // No window, most often for want of an X server: one line on why, and exit status 1.
-            match std::env::var_os("DISPLAY") {
-                None => eprintln!("raytracer: {error}, as DISPLAY is not set"),
-                Some(_) => eprintln!("raytracer: {error}"),
-            }
-            std::process::exit(1)
-        });
+    let options = WindowOptions {
+        resize: true, // a user may size the window: the frame is scaled to fit, still 2:1
+        scale_mode: ScaleMode::AspectRatioStretch,
+        ..WindowOptions::default()
+    };
+    let mut window = Window::new(title, WIDTH, VIEW, options).unwrap_or_else(|error| {
+        // No window, most often for want of an X server: one line on why, and exit status 1.
+        match std::env::var_os("DISPLAY") {
+            None => eprintln!("raytracer: {error}, as DISPLAY is not set"),
+            Some(_) => eprintln!("raytracer: {error}"),
+        }
+        std::process::exit(1)
+    });
     window.set_target_fps(60); // 60 steps a second, not minifb's 250: at rest it mostly sleeps
     let scene = Scene::default();
     let mut camera = Camera::default();
     let mut frame = vec![BACKGROUND; WIDTH * VIEW];
-    let mut shown = None; // the camera whose frame is on screen
+    let mut rendered = None; // the camera whose frame `frame` holds
+    let mut sent = Instant::now(); // when the frame was last sent to the window
     let mut stale = Vec::new(); // see keys_down
     let mut last_step = Instant::now(); // the camera moves by speed × each step's time
     while window.is_open() && !window.is_key_down(Key::Escape) {
         let keys = keys_down(&window, &mut stale);
         camera = moved(camera, &keys, last_step.elapsed().as_secs_f64());
         last_step = Instant::now();
-        // At rest nothing is rendered or sent: under 1% of a core with X here, re-sending alone 8%.
-        if shown == Some(camera) {
+        if rendered != Some(camera) {
+            render(&scene, &camera, &mut frame);
+            rendered = Some(camera);
+        } else if sent.elapsed().as_secs_f64() < RESEND_SECONDS {
+            // At rest: nothing rendered or sent. The re-send repairs a covered or resized window.
             window.update(); // reads the keys and paces the loop: update_with_buffer less the frame
             continue;
         }
-        render(&scene, &camera, &mut frame);
         window
             .update_with_buffer(&frame, WIDTH, VIEW)
             .expect("a frame the window's size");
-        shown = Some(camera);
+        sent = Instant::now();
     }
 }
 

@@ -1,7 +1,7 @@
 //! A Whitted-style ray tracer in one file; beside its 3D view, a top-down 2D slice of the scene.
 use minifb::{Key, ScaleMode, Window, WindowOptions};
 use std::f64::consts::{FRAC_PI_2, TAU};
-use std::ops::{Add, Mul, Neg, Sub};
+use std::ops::{Add, Mul, Sub};
 use std::time::Instant;
 
 pub const VIEW: usize = 512; // each half of the window is VIEW x VIEW pixels
@@ -46,13 +46,6 @@ impl Sub for Vec3 {
     }
 }
 
-impl Neg for Vec3 {
-    type Output = Vec3;
-    fn neg(self) -> Vec3 {
-        vec3(-self.x, -self.y, -self.z)
-    }
-}
-
 impl Mul<f64> for Vec3 {
     type Output = Vec3;
     fn mul(self, scale: f64) -> Vec3 {
@@ -71,12 +64,9 @@ impl Ray {
     pub fn new(origin: Vec3, direction: Vec3, t: f64) -> Ray {
         Ray {
             origin,
-            direction: direction.normalize(), // normalized here; of length 0 only in an empty chord
+            direction: direction.normalize(), // D normalized: t is then the distance along the ray
             t,
         }
-    }
-    fn at(&self, t: f64) -> Vec3 {
-        self.origin + self.direction * t
     }
 }
 
@@ -94,7 +84,7 @@ pub struct Camera {
 
 /// The unit direction `yaw` radians left of -z about +y and `pitch` radians up from level.
 fn heading(yaw: f64, pitch: f64) -> Vec3 {
-    let level = pitch.cos(); // the level part's scale, negative past straight up (for up)
+    let level = pitch.cos(); // cos pitch scales the part of the heading that lies level
     vec3(-yaw.sin() * level, pitch.sin(), -yaw.cos() * level)
 }
 
@@ -111,7 +101,7 @@ impl Camera {
     /// Step 4: the primary ray through (x, y), in pixels from the screen's top left, from O = E.
     pub fn primary_ray(&self, x: f64, y: f64) -> Ray {
         let (view, right, up) = self.axes();
-        // C, p0, p1, p2 less E: D = p(u, v) - E never adds E to take it away (E + x - E != x).
+        // C, p0, p1 and p2 relative to E: D = p(u, v) - E without adding E and taking it away.
         let center = view * SCREEN_DISTANCE;
         let p0 = center - right - up;
         let p1 = center + right - up;
@@ -140,7 +130,7 @@ pub struct Material {
 impl Primitive {
     /// Step 5: the distance t of the ray's first hit with 0 < t < ray.t, if any.
     pub fn intersect(&self, ray: &Ray) -> Option<f64> {
-        let ahead = |t: f64| (t > 0.0 && t < ray.t).then_some(t);
+        let ahead = |t| (t > 0.0 && t < ray.t).then_some(t);
         match *self {
             // t = -(O.N + d) / (D.N); a ray parallel to the plane (D.N = 0) misses it.
             Primitive::Plane { normal, offset } => {
@@ -150,16 +140,15 @@ impl Primitive {
                 }
                 ahead(-(ray.origin.dot(normal) + offset) / slant)
             }
-            // The slide's test: c = C - O, t = c.D, q = c - tD, p² = q.q; hits at t -/+ √(r² - p²),
-            // and from inside the far one (the camera may walk in). Touching (p² = r²), a hit by
-            // the slide's p² > r², misses: a radius-0 sphere (normal 0 / 0) is never hit.
+            // The slide's test: c = C - O, t = c.D, q = c - tD, p² = q.q, a hit at t - √(r² - p²);
+            // from inside (the camera may walk in) at t + √(r² - p²), which the slide leaves out.
             Primitive::Sphere { center, radius } => {
                 let c = center - ray.origin;
                 let t = c.dot(ray.direction);
                 let q = c - ray.direction * t;
                 let p2 = q.dot(q);
                 if p2 >= radius * radius {
-                    return None;
+                    return None; // touching is a miss too: a ball of radius 0 has no surface
                 }
                 let half_chord = (radius * radius - p2).sqrt();
                 ahead(t - half_chord).or(ahead(t + half_chord))
@@ -243,13 +232,13 @@ impl Scene {
             }
         }
         let (primitive, material) = nearest?;
-        let point = ray.at(ray.t);
+        let point = ray.origin + ray.direction * ray.t; // P = O + tD
         let outward = match *primitive {
             Primitive::Sphere { center, .. } => (point - center).normalize(),
             Primitive::Plane { normal, .. } => normal,
         };
         let facing = outward.dot(ray.direction) < 0.0; // N faces the ray: seen from inside too
-        let normal = if facing { outward } else { -outward };
+        let normal = if facing { outward } else { outward * -1.0 }; // else N turned round
         Some(Hit {
             point,
             normal,
@@ -318,7 +307,7 @@ pub const MAP_SCALE: f64 = VIEW as f64 / MAP_SIDE; // map pixels per world unit
 const SAMPLED_EVERY: usize = 10; // the assignment's "every 10th ray"
 const DOT_RADIUS: i32 = 1; // a hit's dot is 3 x 3 map pixels: 1 either side of its point
 const MARKER_RADIUS: i32 = 3; // the light and the eye are 7 x 7
-const OUTLINE_CHORDS: usize = 256; // R(1 - cos(π/256)) < 1/2 map pixel up to R = 6,600 of them
+const OUTLINE_CHORDS: usize = 256; // a circle is drawn as 256 short straight chords
 // Colours 64+ apart in RGB from each other, also to red-green colour-blind eyes.
 pub const BACKGROUND: u32 = 0x000000; // black
 pub const CAMERA_COLOR: u32 = 0xff20c0; // pink: the eye and the screen's middle row
@@ -343,22 +332,29 @@ fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
     }
 }
 
-/// Draws p(t) for from <= t <= ray.t from above: a dot every map pixel along it (rounding spreads
-/// the dots of a ray that starts more than 10^13 units out).
+/// Draws the part of p(t), from <= t <= ray.t, over the map: a dot every map pixel along it. It is
+/// clipped to the map as a line to a box, by the slab method: in x, then in z, it is over the map
+/// between the t where it crosses one edge and the t where it crosses the other.
 fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
-    let pixels_per_t = ray.direction.x.hypot(ray.direction.z) * MAP_SCALE; // along the map
-    if pixels_per_t == 0.0 || ray.t == 0.0 {
-        return; // straight up or down (its start's dot shows it), or no length: nothing to walk
+    let origin = (ray.origin - MAP_CORNER) * MAP_SCALE; // O and D in map pixels
+    let direction = ray.direction * MAP_SCALE;
+    let mut enter = from;
+    let mut leave = ray.t;
+    for (o, d) in [(origin.x, direction.x), (origin.z, direction.z)] {
+        // t = (edge - O) / D at the edges 0 and VIEW; along them (D = 0) ±∞: all of t, or none.
+        let near = -o / d;
+        let far = (VIEW as f64 - o) / d;
+        enter = enter.max(near.min(far));
+        leave = leave.min(near.max(far));
     }
-    let start = ray.origin - MAP_CORNER - vec3(0.5, 0.0, 0.5) * MAP_SIDE; // from the map's middle
-    let distance = start.x.hypot(start.z) * MAP_SCALE; // p(0)'s, in map pixels
-    // Step s's dot is |s - distance| or more from the map's middle, all of the map within VIEW / √2
-    // of it: only steps from distance - VIEW to distance + VIEW can be on it. Walking 2 VIEW steps
-    // at most from the first ends a ray that starts or ends far off the map (10^16 units out, ∞).
-    let first = (from * pixels_per_t).max(distance - VIEW as f64).ceil();
-    let last = f64::min(ray.t * pixels_per_t, first + 2.0 * VIEW as f64).floor();
-    for step in first as usize..=last as usize {
-        plot(frame, ray.at(step as f64 / pixels_per_t), 0, color);
+    let pixels_per_t = direction.x.hypot(direction.z); // along the map
+    if enter >= leave || pixels_per_t == 0.0 {
+        return; // it misses the map, or runs straight up or down: no length on the map
+    }
+    let dots = ((leave - enter) * pixels_per_t).floor() as usize;
+    for dot in 0..=dots {
+        let t = enter + dot as f64 / pixels_per_t;
+        plot(frame, ray.origin + ray.direction * t, 0, color);
     }
 }
 
@@ -372,7 +368,8 @@ fn follow(frame: &mut [u32], scene: &Scene, mut ray: Ray, from: f64, on_hit: u32
     plot(frame, hit.point, DOT_RADIUS, on_hit);
 }
 
-/// The map, back to front: outlines, shadow and mirror rays, sampled rays, screen, light, eye.
+/// The map, back to front, so that what matters most lies on top: the balls' outlines, what the
+/// sampled rays' hits send on (shadow and mirror rays), the sampled rays, the screen, the markers.
 fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     for row in frame.chunks_mut(WIDTH) {
         row[VIEW..].fill(BACKGROUND);
@@ -394,8 +391,8 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
                 };
                 for i in 0..OUTLINE_CHORDS {
                     let chord = around(i + 1) - around(i);
-                    let ray = Ray::new(around(i), chord, chord.length());
-                    draw_ray(frame, &ray, 0.0, to_rgb(material.color));
+                    let chord_ray = Ray::new(around(i), chord, chord.length());
+                    draw_ray(frame, &chord_ray, 0.0, to_rgb(material.color));
                 }
             }
             // Not drawn: its line on the slice would bury the rays; the rays' dots show its hits.
@@ -462,13 +459,13 @@ pub fn moved(mut camera: Camera, keys: &[Key], dt: f64) -> Camera {
     camera
 }
 
-// The window's own mechanics, which the lecture leaves to its template, each said where it is.
-const RESEND_SECONDS: f64 = 0.5; // at rest the frame is only sent again, twice a second
+// The window's own mechanics, which the lecture leaves to its template, are each said in a line.
+const RESEND_SECONDS: f64 = 0.5; // at rest the frame is sent again twice a second, not 60 times
 
 fn main() {
     let title = "raytracer - W A S D R F move, arrows turn, Home: back to the start, Esc quits";
     let options = WindowOptions {
-        resize: true, // a user may size the window: the frame is scaled to fit, still 2:1
+        resize: true, // the user may size the window: the frame is scaled to fit, 2:1 kept
         scale_mode: ScaleMode::AspectRatioStretch,
         ..WindowOptions::default()
     };
@@ -476,7 +473,7 @@ fn main() {
         // No window, most often for want of an X server: one line on why, and exit status 1.
         match std::env::var_os("DISPLAY") {
             None => eprintln!("raytracer: {error}, as DISPLAY is not set"),
-            Some(_) => eprintln!("raytracer: {error}"),
+            _ => eprintln!("raytracer: {error}"),
         }
         std::process::exit(1)
     });
@@ -484,8 +481,8 @@ fn main() {
     let scene = Scene::default();
     let mut camera = Camera::default();
     let mut frame = vec![BACKGROUND; WIDTH * VIEW];
-    let mut rendered = None; // the camera whose frame `frame` holds
-    let mut sent = Instant::now(); // when the frame was last sent to the window
+    let mut rendered = None; // the camera `frame` shows: a frame is rendered only after a move
+    let mut sent = Instant::now(); // re-sent, it shows again in a window uncovered or resized
     let mut stale = Vec::new(); // see keys_down
     let mut last_step = Instant::now(); // the camera moves by speed × each step's time
     while window.is_open() && !window.is_key_down(Key::Escape) {
@@ -496,8 +493,7 @@ fn main() {
             render(&scene, &camera, &mut frame);
             rendered = Some(camera);
         } else if sent.elapsed().as_secs_f64() < RESEND_SECONDS {
-            // At rest: nothing rendered or sent. The re-send repairs a covered or resized window.
-            window.update(); // reads the keys and paces the loop: update_with_buffer less the frame
+            window.update(); // at rest: reads the keys and paces the loop, renders and sends nothing
             continue;
         }
         window

@@ -151,7 +151,7 @@ fn run(display: Option<&str>) -> (Option<i32>, String) {
     let mut command = Command::new(env!("CARGO_BIN_EXE_raytracer"));
     command.env_remove("WAYLAND_DISPLAY");
     match display {
-        Some(display) => command.env("DISPLAY", display),
+        Some(name) => command.env("DISPLAY", name),
         None => command.env_remove("DISPLAY"),
     };
     let output = command

@@ -457,8 +457,8 @@ fn a_mirror_ray_leaves_each_sampled_hit_on_a_mirror_along_r() {
             (point - d * t).length() < 2.0 / MAP_SCALE
         })
     };
-    for &(d, hit) in &sampled {
-        let Some(hit) = hit else {
+    for &(d, hit_or_miss) in &sampled {
+        let Some(hit) = hit_or_miss else {
             continue;
         };
         let n = hit - center;

@@ -248,19 +248,19 @@ fn a_hit_is_the_nearest_root_in_front_of_the_ray() {
         let unit = direction.normalize();
         let ray = Ray::new(origin, direction, f64::INFINITY);
         let ball = Primitive::Sphere { center, radius };
-        let expected = expected_sphere_hit(origin, unit, center, radius);
+        let sphere_root = expected_sphere_hit(origin, unit, center, radius);
         assert_hit(
             ball.intersect(&ray),
-            expected,
+            sphere_root,
             &format!("case {case}, a sphere"),
         );
         let normal = random.point(1.0).normalize();
         let offset = random.between(-5.0, 5.0);
         let plane = Primitive::Plane { normal, offset };
-        let expected = expected_plane_hit(origin, unit, normal, offset);
+        let plane_root = expected_plane_hit(origin, unit, normal, offset);
         assert_hit(
             plane.intersect(&ray),
-            expected,
+            plane_root,
             &format!("case {case}, a plane"),
         );
     }

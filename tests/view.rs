@@ -188,7 +188,8 @@ fn only_what_lies_between_a_point_and_the_light_shades_it() {
     );
 }
 
-/// A light high above the floor: every floor point in view gets nearly all of it.
+/// A light high above the floor: the squares the floor tests look at, x and z from -2 to 2, get
+/// nearly all of it (N.L over 0.999 there).
 const HIGH_LIGHT: Vec3 = vec3(0.0, 100.0, 0.0);
 
 /// The checkered floor alone under HIGH_LIGHT, seen from 2 units above it, looking down: the

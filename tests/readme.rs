@@ -50,8 +50,9 @@ fn readme() -> String {
 fn assert_none_stale(stale: &[String]) {
     assert!(
         stale.is_empty(),
-        "{} claims stale in README.md:\n- {}",
+        "README.md has {} stale claim{}:\n- {}",
         stale.len(),
+        if stale.len() == 1 { "" } else { "s" },
         stale.join("\n- ")
     );
 }

@@ -13,10 +13,6 @@ use scenes::*;
 use std::f64::consts::FRAC_PI_2;
 use std::process::Command;
 
-/// How fast the camera moves and turns, as the README gives it.
-const MOVE_SPEED: f64 = 2.0; // units a second along each held key's direction
-const TURN_SPEED: f64 = 1.5; // radians a second
-
 /// A camera away from the start, turned and tilted, so that each direction is a different one.
 fn somewhere() -> Camera {
     camera_at(vec3(1.0, 0.5, -2.0), 0.7, -0.4)
@@ -42,8 +38,9 @@ fn w_and_s_move_forward_and_back_along_the_view() {
         let after = moved(camera, &keys, DT);
         assert!(
             same(after.position, expected),
-            "{keys:?} for {DT} s should move the eye to {expected:?}, not {:?}",
-            after.position
+            "{keys:?} for {DT} s should move the eye to {expected:?}, not {:?}. {}",
+            after.position,
+            holds(&[SPEED_FIGURE])
         );
     }
 }
@@ -57,8 +54,9 @@ fn a_and_d_move_left_and_right_level() {
         let after = moved(camera, &keys, DT);
         assert!(
             same(after.position, expected),
-            "{keys:?} for {DT} s should move the eye to {expected:?}, not {:?}",
-            after.position
+            "{keys:?} for {DT} s should move the eye to {expected:?}, not {:?}. {}",
+            after.position,
+            holds(&[SPEED_FIGURE])
         );
     }
 }
@@ -71,8 +69,9 @@ fn r_and_f_move_straight_up_and_down() {
         let after = moved(camera, &keys, DT);
         assert!(
             same(after.position, expected),
-            "{keys:?} for {DT} s should move the eye to {expected:?}, not {:?}",
-            after.position
+            "{keys:?} for {DT} s should move the eye to {expected:?}, not {:?}. {}",
+            after.position,
+            holds(&[SPEED_FIGURE])
         );
     }
 }
@@ -92,9 +91,10 @@ fn the_arrows_turn_left_and_right_and_tilt_up_and_down() {
         assert!(
             (after.yaw - yaw).abs() < ROUNDING && (after.pitch - pitch).abs() < ROUNDING,
             "{key:?} for {DT} s should turn the camera to yaw {yaw:.3}, pitch {pitch:.3}, not \
-             yaw {:.3}, pitch {:.3}",
+             yaw {:.3}, pitch {:.3}. {}",
             after.yaw,
-            after.pitch
+            after.pitch,
+            holds(&[SPEED_FIGURE])
         );
         assert!(
             after.position == camera.position,
@@ -151,7 +151,7 @@ fn run(display: Option<&str>) -> (Option<i32>, String) {
     let mut command = Command::new(env!("CARGO_BIN_EXE_raytracer"));
     command.env_remove("WAYLAND_DISPLAY");
     match display {
-        Some(display) => command.env("DISPLAY", display),
+        Some(name) => command.env("DISPLAY", name),
         None => command.env_remove("DISPLAY"),
     };
     let output = command

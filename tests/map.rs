@@ -15,10 +15,13 @@ mod vision;
 use raytracer::*;
 use scenes::*;
 
+/// What a test of the sampled rays adds when it fails: it finds them as the README gives them.
+fn sampled_rays() -> String {
+    holds(&[SAMPLED_FIGURE, SCREEN_FIGURE])
+}
+
 /// The map's side in world units, whatever VIEW is.
 const MAP_SIDE: f64 = VIEW as f64 / MAP_SCALE;
-/// The light's and the eye's markers are squares 7 map pixels wide, as the README says.
-const MARKER_REACH: i32 = 3;
 /// The map pixel over a world point's x and z: x to the right, -z up, from MAP_CORNER.
 fn map_pixel(frame: &[u32], point: Vec3) -> u32 {
     let column = ((point.x - MAP_CORNER.x) * MAP_SCALE) as usize;
@@ -114,11 +117,15 @@ fn the_eye_is_a_pink_square_7_map_pixels_wide() {
     for camera in two_poses() {
         let frame = frame_of(&scene, &camera);
         if let Err(seen) = square_at(&frame, camera.position, MARKER_REACH, CAMERA_COLOR) {
-            panic!("{camera:?}: no CAMERA_COLOR square 7 map pixels wide at the eye, {seen}");
+            panic!(
+                "{camera:?}: no CAMERA_COLOR square 7 map pixels wide at the eye, {seen}. {}",
+                holds(&[MARKER_FIGURE])
+            );
         }
         assert!(
             !ring(&frame, camera.position, MARKER_REACH + 1).contains(&CAMERA_COLOR),
-            "{camera:?}: the eye's square is wider than 7 map pixels"
+            "{camera:?}: the eye's square is wider than 7 map pixels. {}",
+            holds(&[MARKER_FIGURE])
         );
     }
 }
@@ -136,7 +143,10 @@ fn the_screens_middle_row_is_a_pink_line_from_c_minus_right_to_c_plus_right() {
         for along in [-near_end, -0.5, 0.5, near_end] {
             let on_row = middle + right * along;
             if let Err(seen) = drawn_near(&frame, on_row, CAMERA_COLOR) {
-                panic!("{camera:?}: no CAMERA_COLOR on the screen's row at {on_row:?}, {seen}");
+                panic!(
+                    "{camera:?}: no CAMERA_COLOR on the screen's row at {on_row:?}, {seen}. {}",
+                    holds(&[SCREEN_FIGURE])
+                );
             }
         }
         let past_end = 1.0 + 3.0 / MAP_SCALE;
@@ -144,7 +154,8 @@ fn the_screens_middle_row_is_a_pink_line_from_c_minus_right_to_c_plus_right() {
             let past = middle + right * along;
             assert!(
                 drawn_near(&frame, past, CAMERA_COLOR).is_err(),
-                "{camera:?}: the screen's row goes on past its end, to {past:?}"
+                "{camera:?}: the screen's row goes on past its end, to {past:?}. {}",
+                holds(&[SCREEN_FIGURE])
             );
         }
     }
@@ -155,11 +166,15 @@ fn the_light_is_an_orange_square_7_map_pixels_wide() {
     let light = vec3(-2.0, 5.0, 2.0);
     let frame = frame_of(&scene_of(vec![], light), &Camera::default());
     if let Err(seen) = square_at(&frame, light, MARKER_REACH, LIGHT_COLOR) {
-        panic!("no LIGHT_COLOR square 7 map pixels wide under the light at {light:?}, {seen}");
+        panic!(
+            "no LIGHT_COLOR square 7 map pixels wide under the light at {light:?}, {seen}. {}",
+            holds(&[MARKER_FIGURE])
+        );
     }
     assert!(
         !ring(&frame, light, MARKER_REACH + 1).contains(&LIGHT_COLOR),
-        "the light's square is wider than 7 map pixels"
+        "the light's square is wider than 7 map pixels. {}",
+        holds(&[MARKER_FIGURE])
     );
 }
 
@@ -209,9 +224,10 @@ fn off_the_map_the_eye_and_the_light_stand_whole_on_the_nearest_edge() {
                     let seen = frame[y * WIDTH + VIEW + x];
                     assert!(
                         seen == color,
-                        "the {what} {place}: its 7 x 7 square should be whole around map pixel \
-                         ({middle_x}, {middle_y}), but ({x}, {y}) is {}",
-                        named(&[seen])
+                        "the {what} {place}: its square 7 map pixels wide should be whole around \
+                         map pixel ({middle_x}, {middle_y}), but ({x}, {y}) is {}. {}",
+                        named(&[seen]),
+                        holds(&[MARKER_FIGURE])
                     );
                 }
             }
@@ -302,7 +318,8 @@ fn each_sampled_ray_that_hits_a_sphere_ends_there_with_a_dot() {
             if let Err(seen) = square_at(&frame, hit, 1, RAY_COLOR) {
                 panic!(
                     "{camera:?}: no RAY_COLOR dot 3 map pixels wide where a sampled ray hits the \
-                     ball, at {hit:?}; {seen}"
+                     ball, at {hit:?}; {seen}. {}",
+                    sampled_rays()
                 );
             }
             // The ring of 16 map pixels around the dot: the ray coming in crosses it in at most
@@ -320,7 +337,8 @@ fn each_sampled_ray_that_hits_a_sphere_ends_there_with_a_dot() {
             let inside = hit + direction.normalize() * (0.5 * radius);
             assert!(
                 drawn_near(&frame, inside, RAY_COLOR).is_err(),
-                "{camera:?}: a sampled ray is drawn on past its hit, at {inside:?}"
+                "{camera:?}: a sampled ray is drawn on past its hit, at {inside:?}. {}",
+                sampled_rays()
             );
         }
     }
@@ -335,7 +353,9 @@ fn a_sampled_ray_that_hits_nothing_runs_on_in_sky_blue() {
         let point = direction * t;
         if let Err(seen) = drawn_near(&frame, point, MISS_COLOR) {
             panic!(
-                "no MISS_COLOR on the first sampled ray, which sees the sky, at {point:?}: {seen}"
+                "no MISS_COLOR on the first sampled ray, which sees the sky, at {point:?}: {seen}. \
+                 {}",
+                sampled_rays()
             );
         }
     }
@@ -359,11 +379,17 @@ fn every_tenth_ray_is_drawn_and_none_between() {
         let seen = map_pixel(&frame, between);
         assert!(
             seen == BACKGROUND,
-            "halfway between two sampled rays, at {between:?}, the map shows {}: a ray drawn there",
-            named(&[seen])
+            "halfway between two sampled rays, at {between:?}, the map shows {}: a ray drawn \
+             there. {}",
+            named(&[seen]),
+            holds(&[SAMPLED_FIGURE])
         );
         if let Err(seen) = drawn_near(&frame, left * t, MISS_COLOR) {
-            panic!("no sampled ray at {:?}: {seen}", left * t);
+            panic!(
+                "no sampled ray at {:?}: {seen}. {}",
+                left * t,
+                holds(&[SAMPLED_FIGURE])
+            );
         }
     }
 }
@@ -392,7 +418,11 @@ fn a_shadow_ray_runs_from_a_hit_to_the_light_and_stops_there() {
     let hit = leftmost_hit(&camera, center, radius);
     let halfway = hit + (light - hit) * 0.5;
     if let Err(seen) = drawn_near(&frame, halfway, SHADOW_COLOR) {
-        panic!("no SHADOW_COLOR half way from the hit at {hit:?} to the light: {seen}");
+        panic!(
+            "no SHADOW_COLOR half way from a sampled ray's hit at {hit:?} to the light: {seen}. \
+             {}",
+            sampled_rays()
+        );
     }
     let past = light + (light - hit).normalize() * 0.5; // past the light's marker
     assert!(
@@ -421,7 +451,8 @@ fn a_blocked_shadow_ray_ends_at_what_blocks_it() {
     if let Err(seen) = drawn_near(&frame, before, BLOCKED_COLOR) {
         panic!(
             "no BLOCKED_COLOR on the shadow ray before the ball that blocks it, at {before:?}: \
-             {seen}"
+             {seen}. {}",
+            sampled_rays()
         );
     }
     assert!(
@@ -457,8 +488,8 @@ fn a_mirror_ray_leaves_each_sampled_hit_on_a_mirror_along_r() {
             (point - d * t).length() < 2.0 / MAP_SCALE
         })
     };
-    for &(d, hit) in &sampled {
-        let Some(hit) = hit else {
+    for &(d, hit_or_miss) in &sampled {
+        let Some(hit) = hit_or_miss else {
             continue;
         };
         let n = hit - center;
@@ -469,7 +500,9 @@ fn a_mirror_ray_leaves_each_sampled_hit_on_a_mirror_along_r() {
             .expect("the test is wrong: a mirror ray stays under the sampled rays for 10 units");
         if let Err(seen) = drawn_near(&frame, along, MIRROR_COLOR) {
             panic!(
-                "no MIRROR_COLOR at {along:?} on the mirror ray from the hit at {hit:?}: {seen}"
+                "no MIRROR_COLOR at {along:?} on the mirror ray from the hit at {hit:?}: {seen}. \
+                 {}",
+                sampled_rays()
             );
         }
     }
@@ -508,12 +541,16 @@ fn the_sampled_rays_start_at_the_screen() {
                 assert!(
                     drawn_near(&frame, at(t), MISS_COLOR).is_err(),
                     "{camera:?}: a sampled ray is drawn at t = {t:.2}, before the screen at \
-                     t = {screen:.2}"
+                     t = {screen:.2}. {}",
+                    holds(&[SCREEN_FIGURE])
                 );
                 t += 0.25 * pixel;
             }
             if let Err(seen) = drawn_near(&frame, at(screen + 3.0 * pixel), MISS_COLOR) {
-                panic!("{camera:?}: no sampled ray 3 map pixels past the screen: {seen}");
+                panic!(
+                    "{camera:?}: no sampled ray 3 map pixels past the screen: {seen}. {}",
+                    holds(&[SCREEN_FIGURE])
+                );
             }
         }
     }
@@ -635,7 +672,8 @@ fn from_far_off_the_map_the_sampled_rays_still_cross_it() {
                 if let Err(seen) = drawn_near(&frame, point, color) {
                     panic!(
                         "the eye {distance} units out: its sampled ray is missing at {point:?}, \
-                         {seen}"
+                         {seen}. {}",
+                        sampled_rays()
                     );
                 }
             }

@@ -248,19 +248,19 @@ fn a_hit_is_the_nearest_root_in_front_of_the_ray() {
         let unit = direction.normalize();
         let ray = Ray::new(origin, direction, f64::INFINITY);
         let ball = Primitive::Sphere { center, radius };
-        let expected = expected_sphere_hit(origin, unit, center, radius);
+        let sphere_root = expected_sphere_hit(origin, unit, center, radius);
         assert_hit(
             ball.intersect(&ray),
-            expected,
+            sphere_root,
             &format!("case {case}, a sphere"),
         );
         let normal = random.point(1.0).normalize();
         let offset = random.between(-5.0, 5.0);
         let plane = Primitive::Plane { normal, offset };
-        let expected = expected_plane_hit(origin, unit, normal, offset);
+        let plane_root = expected_plane_hit(origin, unit, normal, offset);
         assert_hit(
             plane.intersect(&ray),
-            expected,
+            plane_root,
             &format!("case {case}, a plane"),
         );
     }
@@ -300,7 +300,7 @@ fn a_ray_at_the_centre_of_a_sphere_of_radius_0_sees_the_sky() {
         let color = speck.trace(Ray::new(vec3(0.0, 0.0, 0.0), center, f64::INFINITY), 0);
         assert!(
             color == SKY,
-            "a ray at a radius-0 sphere at {center:?} shows {color:?}"
+            "a ray at a radius-0 sphere at {center:?} shows {color:?}, not the sky {SKY:?}"
         );
     }
 }
@@ -316,7 +316,9 @@ fn a_floor_hit_10_to_the_19_units_out_has_the_floors_colour() {
     let expected = WHITE * AMBIENT;
     assert!(
         (color - expected).length() < ROUNDING,
-        "the far floor should show {expected:?}, an even square in the ambient light, not {color:?}"
+        "the far floor should show {expected:?}, an even square in the ambient light, not \
+         {color:?}. {}",
+        holds(&[AMBIENT_FIGURE])
     );
 }
 
@@ -370,11 +372,13 @@ fn far_away_a_ray_leaving_a_plane_does_not_hit_it_again() {
         let lit = lit_scene.trace(ray(), 0);
         assert!(
             mirrored.x == 0.5 * sky.x,
-            "case {case}, {far:.1e} out: the mirror ray hit the plane it left ({mirrored:?})"
+            "case {case}, {far:.1e} out: the mirror ray hit the plane it left: the black half \
+             mirror shows {mirrored:?}, not half the white sky"
         );
         assert!(
             (lit.x - 1.0).abs() < FULLY_LIT,
-            "case {case}, {far:.1e} out: the shadow ray hit the plane it left ({lit:?})"
+            "case {case}, {far:.1e} out: the shadow ray hit the plane it left: the white plane \
+             shows {lit:?}, not fully lit (1.00, 1.00, 1.00)"
         );
     }
 }

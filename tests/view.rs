@@ -40,7 +40,8 @@ fn pixels_that_hit_nothing_show_the_sky() {
         let seen = rgb(&frame, pixel);
         assert!(
             seen == bytes(SKY),
-            "pixel {pixel:?} should show the sky, not {seen:?}"
+            "pixel {pixel:?} should show the sky, not RGB {seen:?}. {}",
+            holds(&[SCREEN_FIGURE])
         );
     }
 }
@@ -58,7 +59,8 @@ fn a_sphere_covers_its_projected_centre_and_ends_at_its_silhouette() {
     let middle = rgb(&frame, project(&camera, center));
     assert!(
         is_red(middle),
-        "the sphere's centre shows {middle:?}, not the red sphere"
+        "the sphere's centre shows RGB {middle:?}, not the red sphere. {}",
+        holds(&[SCREEN_FIGURE])
     );
     // Seen from the eye the sphere fills a cone of half-angle asin(r / distance): MARGIN inside
     // it, beside the centre, is the sphere, and MARGIN past it is sky.
@@ -76,12 +78,14 @@ fn a_sphere_covers_its_projected_centre_and_ends_at_its_silhouette() {
     let inside = rgb(&frame, at(silhouette - MARGIN));
     assert!(
         is_red(inside),
-        "just inside the silhouette should be the red sphere, not {inside:?}"
+        "just inside the silhouette should be the red sphere, not RGB {inside:?}. {}",
+        holds(&[SCREEN_FIGURE])
     );
     let outside = rgb(&frame, at(silhouette + MARGIN));
     assert!(
         outside == bytes(SKY),
-        "just past the silhouette should be sky, not {outside:?}"
+        "just past the silhouette should be sky, not RGB {outside:?}. {}",
+        holds(&[SCREEN_FIGURE])
     );
 }
 
@@ -99,7 +103,7 @@ fn the_nearest_of_two_spheres_in_line_hides_the_other() {
         let middle = rgb(&frame, (VIEW / 2, VIEW / 2));
         assert!(
             is_red(middle),
-            "with the nearer, red sphere listed {order}, the middle shows {middle:?}, not red"
+            "with the nearer, red sphere listed {order}, the middle shows RGB {middle:?}, not red"
         );
     }
 }
@@ -129,7 +133,8 @@ fn a_sphere_is_shaded_ambient_plus_n_dot_l() {
         let expected = byte(RED.x * lit_share(point, point - center, light));
         assert!(
             red.abs_diff(expected) <= SHADING_SLACK,
-            "{side}: red {red}, where ambient + (1 - ambient) N.L gives {expected}"
+            "{side}: red {red}, where ambient + (1 - ambient) N.L gives {expected}. {}",
+            holds(&[AMBIENT_FIGURE, SCREEN_FIGURE])
         );
     }
 }
@@ -144,12 +149,12 @@ fn a_sphere_between_the_floor_and_the_light_casts_a_shadow() {
     );
     let camera = camera_at(vec3(0.0, 1.0, 0.0), 0.0, -0.3);
     let frame = frame_of(&scene, &camera);
-    // Two floor points on even squares, both in view: the segment from the first to the light
-    // passes the sphere's centre 0.69 away, inside it; the second's passes 1.65 away.
+    // Two floor points in view: the segment from the first to the light passes the sphere's
+    // centre 0.69 away, inside it; the second's passes 1.65 away. Each shows its square's share.
     let shaded = project(&camera, vec3(-0.5, FLOOR_Y, -4.2));
     let lit = project(&camera, vec3(-2.5, FLOOR_Y, -4.2));
     let up = vec3(0.0, 1.0, 0.0);
-    for (what, pixel, share) in [
+    for (what, pixel, light_share) in [
         ("in the shadow, ambient only", shaded, AMBIENT),
         (
             "beside the shadow, lit",
@@ -158,10 +163,16 @@ fn a_sphere_between_the_floor_and_the_light_casts_a_shadow() {
         ),
     ] {
         let green = rgb(&frame, pixel)[1];
-        let expected = byte(WHITE.y * share);
+        let expected = byte(WHITE.y * light_share * square_share(floor_seen(&camera, pixel)));
         assert!(
             green.abs_diff(expected) <= SHADING_SLACK,
-            "the floor {what}: green {green}, expected {expected}"
+            "the floor {what}: green {green}, expected {expected}. {}",
+            holds(&[
+                AMBIENT_FIGURE,
+                SQUARE_FIGURE,
+                ODD_SQUARE_FIGURE,
+                SCREEN_FIGURE
+            ])
         );
     }
 }
@@ -184,11 +195,12 @@ fn only_what_lies_between_a_point_and_the_light_shades_it() {
     let expected = rgb(&alone, pixel);
     assert!(
         seen == expected,
-        "a ball beyond the light or beside it changed the floor from {expected:?} to {seen:?}"
+        "a ball beyond the light or beside it changed the floor from RGB {expected:?} to {seen:?}"
     );
 }
 
-/// A light high above the floor: every floor point in view gets nearly all of it.
+/// A light high above the floor: the squares the floor tests look at, x and z from -2 to 2, get
+/// nearly all of it (N.L over 0.999 there).
 const HIGH_LIGHT: Vec3 = vec3(0.0, 100.0, 0.0);
 
 /// The checkered floor alone under HIGH_LIGHT, seen from 2 units above it, looking down: the
@@ -210,8 +222,11 @@ fn the_floor_is_checkered_by_floor_x_plus_floor_z() {
             let odd = odd_square(point);
             assert!(
                 is_dark(green, point, HIGH_LIGHT) == odd,
-                "the square around x = {x}, z = {z} should be {} (green {green})",
-                if odd { "dark" } else { "bright" }
+                "the floor at x = {x}, z = {z} is on an {} square: it should look {}, yet shows \
+                 green {green}. {}",
+                if odd { "odd" } else { "even" },
+                if odd { "dark" } else { "bright" },
+                holds(&[SQUARE_FIGURE, ODD_SQUARE_FIGURE, SCREEN_FIGURE])
             );
         }
     }
@@ -219,21 +234,27 @@ fn the_floor_is_checkered_by_floor_x_plus_floor_z() {
 
 #[test]
 fn the_floors_odd_squares_show_a_quarter_of_the_light() {
-    // Lit from high above, each square's centre shows the lit share of white, the odd ones a
-    // quarter of it: ODD_SQUARE, the README's figure.
+    // Lit from high above, each point shows the lit share of white, on an odd square a quarter
+    // of it: ODD_SQUARE, the README's figure.
     let (camera, frame) = floor_from_above();
     let up = vec3(0.0, 1.0, 0.0);
     for x in [-0.5, 0.5] {
         let pixel = project(&camera, vec3(x, FLOOR_Y, -0.5));
         let point = floor_seen(&camera, pixel);
         let odd = odd_square(point);
-        let square = if odd { ODD_SQUARE } else { 1.0 };
         let green = rgb(&frame, pixel)[1];
-        let expected = byte(WHITE.y * lit_share(point, up, HIGH_LIGHT) * square);
+        let expected = byte(WHITE.y * lit_share(point, up, HIGH_LIGHT) * square_share(point));
         assert!(
             green.abs_diff(expected) <= SHADING_SLACK,
-            "the {} square around x = {x}, z = -0.5: green {green}, expected {expected}",
-            if odd { "odd" } else { "even" }
+            "the floor at x = {x}, z = -0.5, on an {} square: green {green}, expected {expected}. \
+             {}",
+            if odd { "odd" } else { "even" },
+            holds(&[
+                ODD_SQUARE_FIGURE,
+                SQUARE_FIGURE,
+                AMBIENT_FIGURE,
+                SCREEN_FIGURE
+            ])
         );
     }
 }
@@ -273,7 +294,10 @@ fn a_mirror_ball_reflects_the_checkered_floor_and_the_sky() {
     // Every `EVERY`th pixel each way that sees the ball: its mirror ray goes up to the sky, or
     // down to a floor square, which shows bright or dark unless the point is near a square's edge
     // or in the ball's shadow.
-    let near_edge = |w: f64| (w - w.round()).abs() < EDGE_BAND;
+    let near_edge = |w: f64| {
+        let squares = w / SQUARE_SIZE; // from the nearest edge, in squares
+        (squares - squares.round()).abs() * SQUARE_SIZE < EDGE_BAND
+    };
     for y in (0..VIEW).step_by(EVERY) {
         for x in (0..VIEW).step_by(EVERY) {
             let Some((point, direction)) = reflected_ray(camera.position, center, (x, y)) else {
@@ -283,7 +307,8 @@ fn a_mirror_ball_reflects_the_checkered_floor_and_the_sky() {
             if direction.y >= 0.0 {
                 assert!(
                     seen == bytes(SKY),
-                    "pixel {x}, {y} should reflect the sky, not {seen:?}"
+                    "pixel {x}, {y} should reflect the sky, not RGB {seen:?}: its mirror ray \
+                     R = D - 2(D.N)N from the ball at {point:?} goes up"
                 );
                 continue;
             }
@@ -297,8 +322,12 @@ fn a_mirror_ball_reflects_the_checkered_floor_and_the_sky() {
             let odd = odd_square(on_floor);
             assert!(
                 is_dark(seen[1], on_floor, light) == odd,
-                "pixel {x}, {y} should reflect a {} square at {on_floor:?}, shows {seen:?}",
-                if odd { "dark" } else { "bright" }
+                "pixel {x}, {y} should reflect the floor point {on_floor:?}, on an {} square, \
+                 and look {}; it shows RGB {seen:?}. Its mirror ray, R = D - 2(D.N)N from the \
+                 ball at {point:?}, is wrong, or the floor's squares are. {}",
+                if odd { "odd" } else { "even" },
+                if odd { "dark" } else { "bright" },
+                holds(&[SQUARE_FIGURE, ODD_SQUARE_FIGURE, SCREEN_FIGURE])
             );
         }
     }
@@ -326,15 +355,14 @@ fn a_part_mirror_mixes_its_own_colour_with_what_its_mirror_ray_sees() {
     for (channel, name) in ["red", "green", "blue"].iter().enumerate() {
         assert!(
             shown[channel].abs_diff(expected[channel]) <= SHADING_SLACK,
-            "{name}: {}, where 3/4 of the lit wall and 1/4 of the sky give {} (all: {shown:?})",
+            "{name}: {}, where 3/4 of the lit wall and 1/4 of the sky give {} (RGB {shown:?}). \
+             {}",
             shown[channel],
-            expected[channel]
+            expected[channel],
+            holds(&[AMBIENT_FIGURE])
         );
     }
 }
-
-/// Mirror bounces that a ray is followed through at most, as the README gives it.
-const BOUNCES: u32 = 5;
 
 #[test]
 fn facing_mirrors_stop_after_the_readmes_five_bounces() {
@@ -343,12 +371,13 @@ fn facing_mirrors_stop_after_the_readmes_five_bounces() {
     // recursion stops, lit as that point is lit: bounce 0 is the floor, so after an odd number of
     // bounces it ends on the ceiling and after an even one on the floor.
     const CEILING_Y: f64 = 1.0;
+    let up = vec3(0.0, 1.0, 0.0);
     let floor = Primitive::Plane {
-        normal: vec3(0.0, 1.0, 0.0),
+        normal: up,
         offset: -FLOOR_Y, // y + 1 = 0
     };
     let ceiling = Primitive::Plane {
-        normal: vec3(0.0, -1.0, 0.0),
+        normal: -up,
         offset: CEILING_Y, // -y + 1 = 0
     };
     let scene = scene_of(
@@ -358,26 +387,61 @@ fn facing_mirrors_stop_after_the_readmes_five_bounces() {
         ],
         vec3(0.0, 0.0, -3.0),
     );
-    // Steeply down: bounce k is at z = -0.1 - 0.2k, on the ceiling for odd k.
+    // Steeply down: bounce k is at z = -0.1 - 0.2k, on the ceiling for odd k. Each starts 10^-6
+    // or so off its mirror, which moves the last point by about 10^-6 in all; stopping a bounce
+    // early or late changes the brightness by 0.06 or more.
+    const BOUNCE_SLACK: f64 = 1e-5;
     let ray = Ray::new(vec3(0.0, 0.0, 0.0), vec3(0.0, -1.0, -0.1), f64::INFINITY);
     let color = scene.trace(ray, 0);
-    let on_ceiling = BOUNCES % 2 == 1;
-    let height = if on_ceiling { CEILING_Y } else { FLOOR_Y };
-    let normal = if on_ceiling {
-        vec3(0.0, -1.0, 0.0)
-    } else {
-        vec3(0.0, 1.0, 0.0)
+    // Bounce k's mirror, its point, and how brightly that point is lit.
+    let bounce = |k: u32| {
+        let on_ceiling = k % 2 == 1;
+        let (mirror, height, normal) = if on_ceiling {
+            ("the blue ceiling", CEILING_Y, -up)
+        } else {
+            ("the red floor", FLOOR_Y, up)
+        };
+        let point = vec3(0.0, height, -0.1 - 0.2 * f64::from(k));
+        (mirror, point, lit_share(point, normal, scene.light))
     };
-    let shown = if on_ceiling { color.z } else { color.x }; // the blue ceiling's, the red floor's
-    let last = vec3(0.0, height, -0.1 - 0.2 * f64::from(BOUNCES));
-    let expected = lit_share(last, normal, scene.light);
-    // Each bounce starts 10^-6 or so off its mirror, which moves the last point by about 10^-6 in
-    // all; stopping a bounce early or late changes the brightness by 0.06 or more.
-    const BOUNCE_SLACK: f64 = 1e-5;
-    assert!(
-        (shown - expected).abs() < BOUNCE_SLACK,
-        "after {BOUNCES} bounces the ray should end lit {expected:.4}, it shows {shown:.4} \
-         (all: {color:?}): it stopped at another bounce"
+    let (last_mirror, last_point, expected) = bounce(BOUNCES);
+    // Which mirror the colour comes from: only the floor's red, or only the ceiling's blue.
+    let (ended_on, shown) = match (color.x > 0.0, color.y > 0.0, color.z > 0.0) {
+        (true, false, false) => ("the red floor", color.x),
+        (false, false, true) => ("the blue ceiling", color.z),
+        _ => ("neither mirror alone", f64::NAN),
+    };
+    if ended_on == last_mirror && (shown - expected).abs() < BOUNCE_SLACK {
+        return;
+    }
+    let seen_as = (0..=2 * BOUNCES)
+        .map(bounce)
+        .position(|(mirror, _, lit)| mirror == ended_on && (shown - lit).abs() < BOUNCE_SLACK);
+    let why = match seen_as {
+        Some(k) => format!(
+            "it ended on {ended_on} lit {shown:.3}, as bounce {k} is: the recursion stops at \
+             another depth than MAX_DEPTH = {BOUNCES}, or the mirror ray R = D - 2(D.N)N goes \
+             another way (with its sign flipped it turns back into the mirror it leaves)"
+        ),
+        None if ended_on == last_mirror && (shown - AMBIENT).abs() < BOUNCE_SLACK => format!(
+            "it ended there, but lit only by the ambient share, {AMBIENT}: its shadow ray is \
+             blocked, though nothing lies between the point and the light (does the shadow ray \
+             stop at the light, t = |L - P|?)"
+        ),
+        None if ended_on == last_mirror => format!(
+            "it ended there, but lit {shown:.3}: ambient + (1 - ambient) N.L is worked out wrong \
+             at that point"
+        ),
+        None => format!(
+            "it shows the colour {color:?} (red from the floor, blue from the ceiling): a perfect \
+             mirror mixes in nothing of its own colour until the last bounce, or the ray left \
+             the mirrors for the sky"
+        ),
+    };
+    panic!(
+        "A ray between two facing mirrors should end, after {BOUNCES} bounces, on {last_mirror} \
+         at {last_point:?}, lit {expected:.3}; {why}. {}",
+        holds(&[BOUNCES_FIGURE, AMBIENT_FIGURE])
     );
 }
 
@@ -418,12 +482,14 @@ fn turning_the_camera_left_brings_a_ball_on_the_left_into_view() {
     let seen = rgb(&frame_of(&scene, &turned), where_seen);
     assert!(
         is_red(seen),
-        "turned a quarter left, the red ball should show at {where_seen:?}, not {seen:?}"
+        "turned a quarter left, the red ball should show at {where_seen:?}, not RGB {seen:?}. {}",
+        holds(&[SCREEN_FIGURE])
     );
     let ahead = rgb(&frame_of(&scene, &Camera::default()), where_seen);
     assert!(
         !is_red(ahead),
-        "not turned, the ball on the left should be out of view, yet {where_seen:?} shows {ahead:?}"
+        "not turned, the ball on the left should be out of view, yet {where_seen:?} shows RGB \
+             {ahead:?}"
     );
 }
 
@@ -438,12 +504,13 @@ fn tilting_the_camera_up_brings_a_ball_above_into_view() {
     let seen = rgb(&frame_of(&scene, &tilted), where_seen);
     assert!(
         is_red(seen),
-        "tilted up, the red ball should show at {where_seen:?}, not {seen:?}"
+        "tilted up, the red ball should show at {where_seen:?}, not RGB {seen:?}. {}",
+        holds(&[SCREEN_FIGURE])
     );
     let level = rgb(&frame_of(&scene, &Camera::default()), where_seen);
     assert!(
         !is_red(level),
-        "not tilted, the ball above should be out of view, yet {where_seen:?} shows {level:?}"
+        "not tilted, the ball above should be out of view, yet {where_seen:?} shows RGB {level:?}"
     );
 }
 
@@ -456,12 +523,13 @@ fn moving_the_camera_moves_the_view() {
     let seen = rgb(&frame_of(&scene, &level_with_it), middle);
     assert!(
         is_red(seen),
-        "moved level with the red ball, the middle should show it, not {seen:?}"
+        "moved level with the red ball, the middle should show it, not RGB {seen:?}. {}",
+        holds(&[SCREEN_FIGURE])
     );
     let before = rgb(&frame_of(&scene, &Camera::default()), middle);
     assert!(
         !is_red(before),
-        "from the start, the middle should not show the ball, yet it shows {before:?}"
+        "from the start, the middle should not show the ball, yet it shows RGB {before:?}"
     );
 }
 
@@ -483,8 +551,9 @@ fn a_camera_inside_a_sphere_sees_its_inside() {
             let seen = rgb(&frame, (x, y));
             assert!(
                 seen == expected,
-                "from inside the mirror ball, pixel {x}, {y} shows {seen:?}, not the inside's \
-                 ambient {expected:?}"
+                "from inside the mirror ball, pixel {x}, {y} shows RGB {seen:?}, not the \
+                 inside's ambient share, RGB {expected:?}. {}",
+                holds(&[AMBIENT_FIGURE])
             );
         }
     }
@@ -496,12 +565,21 @@ fn from_below_the_floor_its_underside_gets_only_ambient_light() {
     let below = camera_at(vec3(0.0, -3.0, 0.0), 0.0, 1.0);
     let frame = frame_of(&scene, &below);
     // The light is above the floor: its underside faces away from it.
-    let even_square = vec3(0.5, FLOOR_Y, -1.5);
-    let green = rgb(&frame, project(&below, even_square))[1];
-    let expected = byte(WHITE.y * AMBIENT);
+    let pixel = project(&below, vec3(0.5, FLOOR_Y, -1.5));
+    let point = floor_seen(&below, pixel);
+    let green = rgb(&frame, pixel)[1];
+    let expected = byte(WHITE.y * AMBIENT * square_share(point));
     assert!(
         green == expected,
-        "the floor's underside should show only the ambient light, green {expected}, not {green}"
+        "the floor's underside at {point:?}, on an {} square, should show only the ambient \
+         light, green {expected}, not {green}. {}",
+        if odd_square(point) { "odd" } else { "even" },
+        holds(&[
+            AMBIENT_FIGURE,
+            SQUARE_FIGURE,
+            ODD_SQUARE_FIGURE,
+            SCREEN_FIGURE
+        ])
     );
 }
 
@@ -516,8 +594,11 @@ fn looking_straight_down_shows_the_checkered_floor() {
         let odd = odd_square(point);
         assert!(
             is_dark(green, point, light) == odd,
-            "looking straight down, the square at {point:?} should be {} (green {green})",
-            if odd { "dark" } else { "bright" }
+            "looking straight down, the floor point {point:?} is on an {} square: it should look \
+             {}, yet shows green {green}. {}",
+            if odd { "odd" } else { "even" },
+            if odd { "dark" } else { "bright" },
+            holds(&[SQUARE_FIGURE, ODD_SQUARE_FIGURE, SCREEN_FIGURE])
         );
     }
 }
@@ -539,7 +620,9 @@ fn a_light_inside_a_sphere_leaves_everything_else_in_shadow() {
             let [red, ..] = rgb(&frame, (x, y));
             assert!(
                 red <= most,
-                "pixel {x}, {y} shows red {red}, over the ambient {most}: lit by a light in a ball"
+                "pixel {x}, {y} shows red {red}, over the ambient {most}: lit by a light in a \
+                 ball. {}",
+                holds(&[AMBIENT_FIGURE])
             );
         }
     }

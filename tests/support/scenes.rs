@@ -6,7 +6,7 @@ use std::fmt;
 
 impl fmt::Debug for Vec3 {
     fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
-        write!(f, "({}, {}, {})", self.x, self.y, self.z)
+        write!(f, "({:.2}, {:.2}, {:.2})", self.x, self.y, self.z)
     }
 }
 
@@ -19,16 +19,46 @@ impl fmt::Debug for Camera {
         } = self;
         write!(
             f,
-            "the eye at {position:?} turned {yaw} and tilted {pitch} radians"
+            "the eye at {position:?} turned {yaw:.2} and tilted {pitch:.2} radians"
         )
     }
 }
 
-/// The figures the README gives, which the tests hold the program to.
+/// The figures the README gives, which the tests hold the program to. A test that holds one
+/// names it when it fails: if you changed that figure in src/main.rs on purpose, change it here
+/// too, and the tests follow it.
 pub const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
 pub const ODD_SQUARE: f64 = 0.25; // the floor's odd squares show a quarter of that light
-pub const SAMPLED_EVERY: usize = 10; // the map shows every 10th ray of the screen's middle row
+pub const SQUARE_SIZE: f64 = 1.0; // the floor's squares are 1 unit wide
+pub const BOUNCES: u32 = 5; // mirror bounces a ray is followed through at most
 pub const SCREEN_DISTANCE: f64 = 1.0; // the screen is 1 ahead of the eye, 2 wide and 2 high
+pub const SAMPLED_EVERY: usize = 10; // the map shows every 10th ray of the screen's middle row
+pub const MARKER_REACH: i32 = 3; // the light's and the eye's markers: 3 map pixels either side
+pub const MOVE_SPEED: f64 = 2.0; // units a second along each held key's direction
+pub const TURN_SPEED: f64 = 1.5; // radians a second
+
+/// The figures as the README gives them, with their names here, for `holds`.
+pub const AMBIENT_FIGURE: &str = "ambient 0.1 (AMBIENT)";
+pub const ODD_SQUARE_FIGURE: &str = "odd squares a quarter as bright (ODD_SQUARE)";
+pub const SQUARE_FIGURE: &str = "unit squares (SQUARE_SIZE)";
+pub const BOUNCES_FIGURE: &str = "5 bounces (BOUNCES)";
+pub const SCREEN_FIGURE: &str = "screen 1 ahead and 2 wide (SCREEN_DISTANCE)";
+pub const SAMPLED_FIGURE: &str = "every 10th ray (SAMPLED_EVERY)";
+pub const MARKER_FIGURE: &str = "markers 7 pixels wide (MARKER_REACH)";
+pub const SPEED_FIGURE: &str = "2 units and 1.5 radians a second (MOVE_SPEED, TURN_SPEED)";
+
+/// What a failing test adds about the README figures it holds the program to.
+pub fn holds(figures: &[&str]) -> String {
+    let (last, others) = figures.split_last().expect("a figure");
+    let listed = match others {
+        [] => last.to_string(),
+        _ => format!("{} and {last}", others.join(", ")),
+    };
+    format!(
+        "This test holds src/main.rs to the README's {listed}: if you changed one on purpose, \
+         change it in tests/support/scenes.rs too."
+    )
+}
 
 pub const SKY: Vec3 = vec3(0.4, 0.6, 1.0);
 pub const WHITE: Vec3 = vec3(1.0, 1.0, 1.0);
@@ -195,10 +225,16 @@ pub fn sampled_directions(camera: &Camera) -> Vec<Vec3> {
         .collect()
 }
 
-/// The slide's checkerboard F for unit squares (no 2), with floor: is the floor square under this
-/// point an odd one?
+/// The slide's checkerboard F for squares SQUARE_SIZE wide, with floor: is the floor square
+/// under this point an odd one?
 pub fn odd_square(point: Vec3) -> bool {
-    ((point.x.floor() as i64 + point.z.floor() as i64) & 1) == 1
+    let square = |w: f64| (w / SQUARE_SIZE).floor() as i64;
+    ((square(point.x) + square(point.z)) & 1) == 1
+}
+
+/// The share of the light a floor point's square shows: ODD_SQUARE on an odd one, else all.
+pub fn square_share(point: Vec3) -> f64 {
+    if odd_square(point) { ODD_SQUARE } else { 1.0 }
 }
 
 /// Does a floor point's green byte show a dark square? Dark is under half of what a lit white even

@@ -62,6 +62,11 @@ fn as_seen(pixel: u32) -> [(&'static str, [f64; 3]); 3] {
     ]
 }
 
+/// How far apart two colours are in RGB, to normal eyes.
+pub fn rgb_apart(a: u32, b: u32) -> f64 {
+    rgb_distance(channels(a), channels(b))
+}
+
 fn rgb_distance(a: [f64; 3], b: [f64; 3]) -> f64 {
     let [dr, dg, db] = [0, 1, 2].map(|i| a[i] - b[i]);
     (dr * dr + dg * dg + db * db).sqrt()

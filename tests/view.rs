@@ -372,12 +372,13 @@ fn facing_mirrors_stop_after_the_readmes_five_bounces() {
     // bounces it ends on the ceiling and after an even one on the floor.
     const CEILING_Y: f64 = 1.0;
     let up = vec3(0.0, 1.0, 0.0);
+    let down = vec3(0.0, -1.0, 0.0);
     let floor = Primitive::Plane {
         normal: up,
         offset: -FLOOR_Y, // y + 1 = 0
     };
     let ceiling = Primitive::Plane {
-        normal: -up,
+        normal: down,
         offset: CEILING_Y, // -y + 1 = 0
     };
     let scene = scene_of(
@@ -397,7 +398,7 @@ fn facing_mirrors_stop_after_the_readmes_five_bounces() {
     let bounce = |k: u32| {
         let on_ceiling = k % 2 == 1;
         let (mirror, height, normal) = if on_ceiling {
-            ("the blue ceiling", CEILING_Y, -up)
+            ("the blue ceiling", CEILING_Y, down)
         } else {
             ("the red floor", FLOOR_Y, up)
         };

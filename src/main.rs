@@ -172,8 +172,10 @@ impl Default for Scene {
             checkered,
         };
         let ball = |center, radius, color, reflectivity| {
-            let sphere = Primitive::Sphere { center, radius };
-            (sphere, material(color, reflectivity, false))
+            (
+                Primitive::Sphere { center, radius },
+                material(color, reflectivity, false),
+            )
         };
         let floor = Primitive::Plane {
             normal: vec3(0.0, 1.0, 0.0),
@@ -279,7 +281,7 @@ impl Scene {
 /// Step 8, the slide's checkerboard F = ((int)(2 λ1) + (int)λ2) & 1 with λ1 = x, λ2 = z, for unit
 /// squares (no 2) and with floor for (int): truncation would merge the squares either side of 0.
 fn odd_square(point: Vec3) -> bool {
-    (point.x.floor() + point.z.floor()).rem_euclid(2.0) == 1.0 // the slide's & 1: the sum mod 2
+    (point.x.floor() + point.z.floor()).rem_euclid(2.0) == 1.0 // & 1 as the sum mod 2, in floats, which never overflow
 }
 
 // Rendering, the slide's step 6: each pixel of the 3D view its primary ray's colour; then the map.
@@ -294,7 +296,7 @@ pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
 }
 
 fn to_rgb(color: Vec3) -> u32 {
-    let byte = |channel: f64| (channel.min(1.0) * 255.0) as u32; // 0RGB; shading is never below 0
+    let byte = |channel: f64| (channel.min(1.0) * 255.0) as u32; // brighter than white shows 255
     byte(color.x) << 16 | byte(color.y) << 8 | byte(color.z)
 }
 
@@ -308,7 +310,7 @@ const SAMPLED_EVERY: usize = 10; // the assignment's "every 10th ray"
 const DOT_RADIUS: i32 = 1; // a hit's dot is 3 x 3 map pixels: 1 either side of its point
 const MARKER_RADIUS: i32 = 3; // the light and the eye are 7 x 7
 const OUTLINE_CHORDS: usize = 256; // a circle is drawn as 256 short straight chords
-// Colours 64+ apart in RGB from each other, also to red-green colour-blind eyes.
+// Colours no two alike, also to red-green colour-blind eyes, the most important the brightest.
 pub const BACKGROUND: u32 = 0x000000; // black
 pub const CAMERA_COLOR: u32 = 0xff20c0; // pink: the eye and the screen's middle row
 pub const RAY_COLOR: u32 = 0xffff00; // yellow: a sampled ray, from the screen to its hit
@@ -332,18 +334,19 @@ fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
     }
 }
 
-/// Draws the part of p(t), from <= t <= ray.t, over the map: a dot every map pixel along it. It is
-/// clipped to the map as a line to a box, by the slab method: in x, then in z, it is over the map
-/// between the t where it crosses one edge and the t where it crosses the other.
+/// Draws p(t), from <= t <= ray.t, a dot every map pixel, clipped to the map by the slab method:
+/// in x, then in z, p(t) is over the map between the t where it crosses one edge and the other.
 fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
     let origin = (ray.origin - MAP_CORNER) * MAP_SCALE; // O and D in map pixels
     let direction = ray.direction * MAP_SCALE;
     let mut enter = from;
     let mut leave = ray.t;
     for (o, d) in [(origin.x, direction.x), (origin.z, direction.z)] {
-        // t = (edge - O) / D at the edges 0 and VIEW; along them (D = 0) ±∞: all of t, or none.
-        let near = -o / d;
-        let far = (VIEW as f64 - o) / d;
+        if d == 0.0 {
+            continue; // it runs along these edges, never across: plot leaves out what is off the map
+        }
+        let near = -o / d; // t = (edge - O) / D at the edge 0,
+        let far = (VIEW as f64 - o) / d; // and at the edge VIEW
         enter = enter.max(near.min(far));
         leave = leave.min(near.max(far));
     }
@@ -368,8 +371,8 @@ fn follow(frame: &mut [u32], scene: &Scene, mut ray: Ray, from: f64, on_hit: u32
     plot(frame, hit.point, DOT_RADIUS, on_hit);
 }
 
-/// The map, back to front, so that what matters most lies on top: the balls' outlines, what the
-/// sampled rays' hits send on (shadow and mirror rays), the sampled rays, the screen, the markers.
+/// The map, back to front so that what matters most lies on top: the balls' outlines, the shadow
+/// and mirror rays from the sampled rays' hits, the sampled rays, the screen, the markers.
 fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     for row in frame.chunks_mut(WIDTH) {
         row[VIEW..].fill(BACKGROUND);
@@ -426,13 +429,9 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     draw_ray(frame, &Ray::new(row_start, right, 2.0), 0.0, CAMERA_COLOR); // to C + right
     // The light's marker, then the eye's; off the map, each whole on the edge nearest to it.
     let inset = (MARKER_RADIUS as f64 + 0.5) / MAP_SCALE; // to its middle pixel's middle
-    let snap = |w: f64, corner: f64| w.clamp(corner + inset, corner + MAP_SIDE - inset);
+    let fit = |value: f64, corner: f64| value.clamp(corner + inset, corner + MAP_SIDE - inset);
     for (point, color) in [(scene.light, LIGHT_COLOR), (camera.position, CAMERA_COLOR)] {
-        let middle = vec3(
-            snap(point.x, MAP_CORNER.x),
-            0.0,
-            snap(point.z, MAP_CORNER.z),
-        );
+        let middle = vec3(fit(point.x, MAP_CORNER.x), 0.0, fit(point.z, MAP_CORNER.z));
         plot(frame, middle, MARKER_RADIUS, color);
     }
 }
@@ -460,7 +459,7 @@ pub fn moved(mut camera: Camera, keys: &[Key], dt: f64) -> Camera {
 }
 
 // The window's own mechanics, which the lecture leaves to its template, are each said in a line.
-const RESEND_SECONDS: f64 = 0.5; // at rest the frame is sent again twice a second, not 60 times
+const RESEND_EVERY: u64 = 30; // at rest every 30th step sends the frame again: twice a second
 
 fn main() {
     let title = "raytracer - W A S D R F move, arrows turn, Home: back to the start, Esc quits";
@@ -482,7 +481,7 @@ fn main() {
     let mut camera = Camera::default();
     let mut frame = vec![BACKGROUND; WIDTH * VIEW];
     let mut rendered = None; // the camera `frame` shows: a frame is rendered only after a move
-    let mut sent = Instant::now(); // re-sent, it shows again in a window uncovered or resized
+    let mut steps_at_rest = 0; // re-sent, the frame shows again in a window uncovered or resized
     let mut stale = Vec::new(); // see keys_down
     let mut last_step = Instant::now(); // the camera moves by speed × each step's time
     while window.is_open() && !window.is_key_down(Key::Escape) {
@@ -492,14 +491,16 @@ fn main() {
         if rendered != Some(camera) {
             render(&scene, &camera, &mut frame);
             rendered = Some(camera);
-        } else if sent.elapsed().as_secs_f64() < RESEND_SECONDS {
-            window.update(); // at rest: reads the keys and paces the loop, renders and sends nothing
-            continue;
+            steps_at_rest = 0;
         }
-        window
-            .update_with_buffer(&frame, WIDTH, VIEW)
-            .expect("a frame the window's size");
-        sent = Instant::now();
+        if steps_at_rest % RESEND_EVERY == 0 {
+            window
+                .update_with_buffer(&frame, WIDTH, VIEW)
+                .expect("a frame the window's size");
+        } else {
+            window.update(); // at rest: reads the keys and paces the loop, renders and sends nothing
+        }
+        steps_at_rest += 1;
     }
 }
 

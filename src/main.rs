@@ -281,7 +281,7 @@ impl Scene {
 /// Step 8, the slide's checkerboard F = ((int)(2 λ1) + (int)λ2) & 1 with λ1 = x, λ2 = z, for unit
 /// squares (no 2) and with floor for (int): truncation would merge the squares either side of 0.
 fn odd_square(point: Vec3) -> bool {
-    (point.x.floor() + point.z.floor()).rem_euclid(2.0) == 1.0 // & 1 as the sum mod 2, in floats, which never overflow
+    (point.x.floor() + point.z.floor()).rem_euclid(2.0) == 1.0 // & 1: the sum mod 2, no overflow
 }
 
 // Rendering, the slide's step 6: each pixel of the 3D view its primary ray's colour; then the map.
@@ -343,7 +343,7 @@ fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
     let mut leave = ray.t;
     for (o, d) in [(origin.x, direction.x), (origin.z, direction.z)] {
         if d == 0.0 {
-            continue; // it runs along these edges, never across: plot leaves out what is off the map
+            continue; // it runs along these edges, never across; plot leaves out what is off them
         }
         let near = -o / d; // t = (edge - O) / D at the edge 0,
         let far = (VIEW as f64 - o) / d; // and at the edge VIEW
@@ -498,7 +498,7 @@ fn main() {
                 .update_with_buffer(&frame, WIDTH, VIEW)
                 .expect("a frame the window's size");
         } else {
-            window.update(); // at rest: reads the keys and paces the loop, renders and sends nothing
+            window.update(); // at rest: reads the keys, paces the loop, renders and sends nothing
         }
         steps_at_rest += 1;
     }

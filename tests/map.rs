@@ -500,8 +500,8 @@ fn a_mirror_ray_leaves_each_sampled_hit_on_a_mirror_along_r() {
             .expect("the test is wrong: a mirror ray stays under the sampled rays for 10 units");
         if let Err(seen) = drawn_near(&frame, along, MIRROR_COLOR) {
             panic!(
-                "no MIRROR_COLOR at {along:?} on the mirror ray from the hit at {hit:?}: {seen}. \
-                 {}",
+                "no MIRROR_COLOR at {along:?} on the mirror ray R = D - 2(D.N)N from the hit at \
+                 {hit:?}: {seen}. Is R worked out as the slide does? {}",
                 sampled_rays()
             );
         }

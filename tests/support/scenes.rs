@@ -56,7 +56,7 @@ pub fn holds(figures: &[&str]) -> String {
     };
     format!(
         "This test holds src/main.rs to the README's {listed}: if you changed one on purpose, \
-         change it in tests/support/scenes.rs too."
+         change it in tests/support/scenes.rs too; if not, the tracer is wrong here."
     )
 }
 

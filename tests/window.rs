@@ -81,7 +81,7 @@ fn a_key_held_twice_as_long_moves_the_camera_twice_as_far_at_the_readmes_speed()
         assert!(
             (distance - expected).abs() <= SPEED_TOLERANCE * expected,
             "W held {seconds} s should move the camera {expected} units, the README's \
-             {README_SPEED} units a second, give or take {}%; it moved it {distance:.3}",
+             {README_SPEED} units a second, give or take {}%; it moved it {distance:.3} units",
             SPEED_TOLERANCE * 100.0
         );
     }
@@ -124,7 +124,7 @@ fn a_key_let_go_while_the_focus_was_elsewhere_does_not_move_the_camera() {
     let went_on = units_up(focus_left, stopped);
     assert!(
         went_on <= AFTER_THE_FOCUS_LEFT,
-        "the eye should stop when the focus leaves the window with W held; it went on {went_on} \
+        "the eye should stop when the focus leaves the window with W held; it went on {went_on:.2} \
          units, from map pixel {focus_left:?} to {stopped:?}"
     );
     // The whole window, not just the eye: an eye driven off the map stays whole on its edge.

@@ -100,7 +100,7 @@ impl Session {
         let display = read_line_within(stdout, Duration::from_secs(20))
             .map(|number| format!(":{}", number.trim()))
             .filter(|display| display.len() > 1)
-            .expect("Xvfb gave no display number within 20 s");
+            .expect("Xvfb gave no display number within 20 s: it did not start, or not in time");
         let (x, screen) = x11rb::connect(Some(&display)).unwrap_or_else(|error| {
             panic!("the test could not connect to Xvfb at {display}: {error}")
         });

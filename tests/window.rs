@@ -6,7 +6,7 @@
 //! They need Xvfb and xdotool (`apt-get install xvfb xdotool`), so plain `cargo test` leaves them
 //! out; `cargo test --test window -- --include-ignored` runs them, as CI's
 //! `cargo test --no-fail-fast -- --include-ignored` does. They run one at a time (see
-//! tests/support/xwindow.rs, which starts and screenshots everything), about a minute in all.
+//! tests/support/xwindow.rs, which starts and screenshots everything), about half a minute in all.
 #[allow(dead_code)]
 #[path = "../src/main.rs"]
 mod raytracer;
@@ -146,9 +146,10 @@ fn a_key_let_go_while_the_focus_was_elsewhere_does_not_move_the_camera() {
     );
 }
 
-/// How far the eye may still go after the focus left: the program sees it at its next step or
-/// two (0.1 s at most on a loaded machine), at 2 units a second.
-const AFTER_THE_FOCUS_LEFT: f64 = 0.25;
+/// How far the eye may still go after the focus left: half a second at 2 units a second. The
+/// program sees the focus go at its next step, but a loaded machine may hold up a step or the
+/// frame on the screen. Without keys_down's filter the eye goes on to the map's edge, 9 units.
+const AFTER_THE_FOCUS_LEFT: f64 = 1.0;
 
 #[test]
 #[ignore = "needs Xvfb and xdotool (apt-get install xvfb xdotool): run with --include-ignored"]
@@ -177,14 +178,15 @@ fn a_window_uncovered_shows_its_frame_again_within_a_second() {
     shows_the_start_frame(&session);
     let (x, y) = session.position();
     let cover = session.open_window(x + 100, y + 100, 600, 300); // over both halves
+    let under_the_cover = || session.screenshot().at(400, 250);
     let covered = wait_until(Duration::from_secs(5), || {
-        (session.screenshot().at(400, 250) == 0xff_ffff).then_some(())
+        (under_the_cover() == 0xff_ffff).then_some(())
     });
-    let under = session.screenshot().at(400, 250);
     assert!(
         covered.is_some(),
         "the test's white window should cover the program's window at (400, 250) within 5 s; it \
-         shows {under:06x} there"
+         shows {:06x} there",
+        under_the_cover()
     );
     sleep(Duration::from_millis(500));
     session.close_window(cover);
@@ -224,11 +226,12 @@ fn a_resized_window_shows_the_frame_scaled_to_fit_with_2_to_1_kept() {
             "xdotool should make the window {width}x{height}; it is {:?}",
             session.size()
         );
-        let asked = Instant::now();
+        // No key pressed: the frame sent again at rest is what must show it.
+        let resized_at = Instant::now();
         let shown = wait_until(Duration::from_secs(1), || {
             scaled_mismatches(&session.screenshot())
                 .is_none()
-                .then(|| asked.elapsed())
+                .then(|| resized_at.elapsed())
         });
         let Some(took) = shown else {
             let mismatches = scaled_mismatches(&session.screenshot()).unwrap_or_default();
@@ -325,19 +328,23 @@ fn units_up(from: (usize, usize), to: (usize, usize)) -> f64 {
     (from.1 as f64 - to.1 as f64) / MAP_SCALE
 }
 
-/// The eye's marker once it has stopped: the same in two screenshots a third of a second apart
-/// (20 steps), within 5 s.
+/// The eye's marker once it has stopped: where it has stayed for a second (twice the re-send's
+/// half second), within 10 s. Still for 0.3 s once took a moving eye for one at rest on a loaded
+/// machine, and a held key's distance came out 10% short.
 fn eye_at_rest(session: &Session) -> (usize, usize) {
-    let mut last = None;
-    let rest = wait_until(Duration::from_secs(5), || {
-        sleep(Duration::from_millis(300));
+    let mut last = (None, Instant::now()); // where the eye was, and since when
+    let rest = wait_until(Duration::from_secs(10), || {
         let now = eye(&session.screenshot());
-        let same = now.is_some() && now == last;
-        last = now;
-        same.then_some(now)
+        if now != last.0 {
+            last = (now, Instant::now());
+        }
+        (now.is_some() && last.1.elapsed() >= Duration::from_secs(1)).then_some(now)
     });
     rest.flatten().unwrap_or_else(|| {
-        panic!("the eye should come to rest on the map within 5 s; it is at {last:?}")
+        panic!(
+            "the eye should come to rest on the map within 10 s; it is at {:?}",
+            last.0
+        )
     })
 }
 

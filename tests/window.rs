@@ -12,7 +12,7 @@
 mod raytracer;
 #[allow(dead_code)]
 #[path = "support/xwindow.rs"]
-mod xwindow;
+mod xwindow; // Xvfb, the program, xdotool and screenshots: nothing a reader of the tests needs
 
 use raytracer::*;
 use std::thread::sleep;

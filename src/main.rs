@@ -100,9 +100,9 @@ impl Camera {
     }
     /// Step 4: the primary ray through (x, y), in pixels from the screen's top left, from O = E.
     pub fn primary_ray(&self, x: f64, y: f64) -> Ray {
-        let (view, right, up) = self.axes();
+        let (forward, right, up) = self.axes(); // V, right, up
         // C, p0, p1 and p2 relative to E: D = p(u, v) - E without adding E and taking it away.
-        let center = view * SCREEN_DISTANCE;
+        let center = forward * SCREEN_DISTANCE;
         let p0 = center - right - up;
         let p1 = center + right - up;
         let p2 = center - right + up;
@@ -187,7 +187,7 @@ impl Default for Scene {
             ball(vec3(0.3, 0.0, -4.5), 1.0, white, 0.85), // centre, radius 1, white, mirror 0.85
             ball(vec3(-2.0, -0.2, -4.2), 0.8, vec3(0.9, 0.2, 0.2), 0.0), // radius 0.8, red, matte
             ball(vec3(1.9, -0.4, -3.4), 0.6, vec3(0.2, 0.8, 0.3), 0.0), // radius 0.6, green, matte
-            ball(vec3(-0.9, -0.45, -2.6), 0.55, vec3(0.2, 0.4, 0.9), 0.0), // radius 0.55, blue, matte
+            ball(vec3(-0.9, -0.45, -2.6), 0.55, vec3(0.2, 0.4, 0.9), 0.0), // radius 0.55, blue
         ];
         Scene {
             objects,
@@ -201,7 +201,7 @@ impl Default for Scene {
 // the light) × ODD_SQUARE on odd squares, mixed by reflectivity with what R = D - 2(D.N)N sees.
 const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
 const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
-const LIFT: f64 = 1e-6; // a ray leaving a surface starts this far off it, times 1 + |point|
+const LIFT: f64 = 1e-6; // how far a leaving ray starts off its surface, times 1 + |point|
 const ODD_SQUARE: f64 = 0.25; // odd squares are this bright beside the even ones
 
 struct Hit {
@@ -211,7 +211,7 @@ struct Hit {
 }
 
 impl Hit {
-    /// A ray leaving the hit, lifted along N past the point's rounding error, which grows with |p|.
+    /// A ray leaving the hit, lifted off it along N: else rounding could make it hit its surface.
     fn outgoing(&self, direction: Vec3, t: f64) -> Ray {
         let lift = self.normal * (LIFT * (1.0 + self.point.length()));
         Ray::new(self.point + lift, direction, t)
@@ -278,10 +278,11 @@ impl Scene {
     }
 }
 
-/// Step 8, the slide's checkerboard F = ((int)(2 λ1) + (int)λ2) & 1 with λ1 = x, λ2 = z, for unit
-/// squares (no 2) and with floor for (int): truncation would merge the squares either side of 0.
+/// Step 8, the slide's checkerboard F = ((int)(2 λ1) + (int)λ2) & 1, λ1 = x, λ2 = z: unit squares
+/// (no 2); floor for (int), as truncating would merge the squares either side of 0; and the sum
+/// kept in floats, as far out it is past what an integer holds.
 fn odd_square(point: Vec3) -> bool {
-    (point.x.floor() + point.z.floor()).rem_euclid(2.0) == 1.0 // & 1: the sum mod 2, no overflow
+    (point.x.floor() + point.z.floor()).rem_euclid(2.0) == 1.0 // & 1: the sum mod 2
 }
 
 // Rendering, the slide's step 6: each pixel of the 3D view its primary ray's colour; then the map.
@@ -337,20 +338,20 @@ fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
 /// Draws p(t), from <= t <= ray.t, a dot every map pixel, clipped to the map by the slab method:
 /// in x, then in z, p(t) is over the map between the t where it crosses one edge and the other.
 fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
-    let origin = (ray.origin - MAP_CORNER) * MAP_SCALE; // O and D in map pixels
-    let direction = ray.direction * MAP_SCALE;
+    let start = (ray.origin - MAP_CORNER) * MAP_SCALE; // p(0) in map pixels
+    let velocity = ray.direction * MAP_SCALE; // how far p(t) moves on the map as t grows by 1
     let mut enter = from;
     let mut leave = ray.t;
-    for (o, d) in [(origin.x, direction.x), (origin.z, direction.z)] {
-        if d == 0.0 {
+    for (position, speed) in [(start.x, velocity.x), (start.z, velocity.z)] {
+        if speed == 0.0 {
             continue; // it runs along these edges, never across; plot leaves out what is off them
         }
-        let near = -o / d; // t = (edge - O) / D at the edge 0,
-        let far = (VIEW as f64 - o) / d; // and at the edge VIEW
-        enter = enter.max(near.min(far));
-        leave = leave.min(near.max(far));
+        let at_0 = -position / speed; // t = (edge - O) / D at the edge 0,
+        let at_view = (VIEW as f64 - position) / speed; // and at the edge VIEW
+        enter = enter.max(at_0.min(at_view));
+        leave = leave.min(at_0.max(at_view));
     }
-    let pixels_per_t = direction.x.hypot(direction.z); // along the map
+    let pixels_per_t = velocity.x.hypot(velocity.z); // along the map
     if enter >= leave || pixels_per_t == 0.0 {
         return; // it misses the map, or runs straight up or down: no length on the map
     }
@@ -377,7 +378,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     for row in frame.chunks_mut(WIDTH) {
         row[VIEW..].fill(BACKGROUND);
     }
-    let (view, right, up) = camera.axes(); // the slice holds V and right; up is its normal
+    let (forward, right, up) = camera.axes(); // the slice holds V and right; up is its normal
     for (primitive, material) in &scene.objects {
         match *primitive {
             // The slice cuts a sphere in a circle around C - hN, radius √(r² - h²), h = (C - E).N.
@@ -390,7 +391,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
                 let around = |i: usize| {
                     let angle = TAU * i as f64 / OUTLINE_CHORDS as f64;
                     center - up * height
-                        + (right * angle.cos() + view * angle.sin()) * circle_radius
+                        + (right * angle.cos() + forward * angle.sin()) * circle_radius
                 };
                 for i in 0..OUTLINE_CHORDS {
                     let chord = around(i + 1) - around(i);
@@ -422,10 +423,10 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     }
     // From the screen on, t = d / D.V: before it the rays would bury the eye and the screen.
     for ray in sampled() {
-        let screen = SCREEN_DISTANCE / ray.direction.dot(view);
+        let screen = SCREEN_DISTANCE / ray.direction.dot(forward);
         follow(frame, scene, ray, screen, RAY_COLOR, MISS_COLOR);
     }
-    let row_start = camera.position + view * SCREEN_DISTANCE - right; // the middle row: C - right
+    let row_start = camera.position + forward * SCREEN_DISTANCE - right; // the row from C - right
     draw_ray(frame, &Ray::new(row_start, right, 2.0), 0.0, CAMERA_COLOR); // to C + right
     // The light's marker, then the eye's; off the map, each whole on the edge nearest to it.
     let inset = (MARKER_RADIUS as f64 + 0.5) / MAP_SCALE; // to its middle pixel's middle
@@ -447,8 +448,8 @@ pub fn moved(mut camera: Camera, keys: &[Key], dt: f64) -> Camera {
     }
     let down = |key| if keys.contains(&key) { 1.0 } else { 0.0 };
     let axis = |plus, minus| down(plus) - down(minus); // 1, -1, or 0 with both or neither down
-    let (view, right, _) = camera.axes();
-    let motion = view * axis(Key::W, Key::S)
+    let (forward, right, _) = camera.axes();
+    let motion = forward * axis(Key::W, Key::S)
         + right * axis(Key::D, Key::A)
         + vec3(0.0, axis(Key::R, Key::F), 0.0);
     camera.position = camera.position + motion * MOVE_SPEED * dt;
@@ -458,7 +459,6 @@ pub fn moved(mut camera: Camera, keys: &[Key], dt: f64) -> Camera {
     camera
 }
 
-// The window's own mechanics, which the lecture leaves to its template, are each said in a line.
 const RESEND_EVERY: u64 = 30; // at rest every 30th step sends the frame again: twice a second
 
 fn main() {
@@ -482,7 +482,7 @@ fn main() {
     let mut frame = vec![BACKGROUND; WIDTH * VIEW];
     let mut rendered = None; // the camera `frame` shows: a frame is rendered only after a move
     let mut steps_at_rest = 0; // re-sent, the frame shows again in a window uncovered or resized
-    let mut stale = Vec::new(); // see keys_down
+    let mut stale = Vec::new(); // keys held when the focus left: ignored until let go
     let mut last_step = Instant::now(); // the camera moves by speed × each step's time
     while window.is_open() && !window.is_key_down(Key::Escape) {
         let keys = keys_down(&window, &mut stale);

@@ -120,13 +120,6 @@ pub enum Primitive {
     Plane { normal: Vec3, offset: f64 }, // N normalized, d = offset
 }
 
-#[derive(Clone, Copy)]
-pub struct Material {
-    pub color: Vec3,
-    pub reflectivity: f64, // 0 is matte, 1 a perfect mirror
-    pub checkered: bool,   // a checkerboard of unit squares in x and z, as on the floor
-}
-
 impl Primitive {
     /// Step 5: the distance t of the ray's first hit with 0 < t < ray.t, if any.
     pub fn intersect(&self, ray: &Ray) -> Option<f64> {
@@ -157,7 +150,14 @@ impl Primitive {
     }
 }
 
-// The scene: the objects, one point light and a flat sky.
+// The scene: the objects, each with its material, one point light and a flat sky.
+#[derive(Clone, Copy)]
+pub struct Material {
+    pub color: Vec3,
+    pub reflectivity: f64, // 0 is matte, 1 a perfect mirror
+    pub checkered: bool,   // a checkerboard of unit squares in x and z, as on the floor
+}
+
 pub struct Scene {
     pub objects: Vec<(Primitive, Material)>,
     pub light: Vec3,
@@ -201,7 +201,7 @@ impl Default for Scene {
 // the light) × ODD_SQUARE on odd squares, mixed by reflectivity with what R = D - 2(D.N)N sees.
 const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
 const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
-const LIFT: f64 = 1e-6; // how far a leaving ray starts off its surface, times 1 + |point|
+const LIFT: f64 = 1e-6; // a leaving ray starts this far off, times 1 + |P|, as P's rounding grows
 const ODD_SQUARE: f64 = 0.25; // odd squares are this bright beside the even ones
 
 struct Hit {
@@ -338,20 +338,20 @@ fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
 /// Draws p(t), from <= t <= ray.t, a dot every map pixel, clipped to the map by the slab method:
 /// in x, then in z, p(t) is over the map between the t where it crosses one edge and the other.
 fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
-    let start = (ray.origin - MAP_CORNER) * MAP_SCALE; // p(0) in map pixels
-    let velocity = ray.direction * MAP_SCALE; // how far p(t) moves on the map as t grows by 1
+    let origin = (ray.origin - MAP_CORNER) * MAP_SCALE; // O and D in map pixels, not world units
+    let direction = ray.direction * MAP_SCALE;
     let mut enter = from;
     let mut leave = ray.t;
-    for (position, speed) in [(start.x, velocity.x), (start.z, velocity.z)] {
-        if speed == 0.0 {
+    for (o, d) in [(origin.x, direction.x), (origin.z, direction.z)] {
+        if d == 0.0 {
             continue; // it runs along these edges, never across; plot leaves out what is off them
         }
-        let at_0 = -position / speed; // t = (edge - O) / D at the edge 0,
-        let at_view = (VIEW as f64 - position) / speed; // and at the edge VIEW
+        let at_0 = -o / d; // t = (edge - O) / D at the edge 0,
+        let at_view = (VIEW as f64 - o) / d; // and at the edge VIEW
         enter = enter.max(at_0.min(at_view));
         leave = leave.min(at_0.max(at_view));
     }
-    let pixels_per_t = velocity.x.hypot(velocity.z); // along the map
+    let pixels_per_t = direction.x.hypot(direction.z); // along the map
     if enter >= leave || pixels_per_t == 0.0 {
         return; // it misses the map, or runs straight up or down: no length on the map
     }
@@ -429,7 +429,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     let row_start = camera.position + forward * SCREEN_DISTANCE - right; // the row from C - right
     draw_ray(frame, &Ray::new(row_start, right, 2.0), 0.0, CAMERA_COLOR); // to C + right
     // The light's marker, then the eye's; off the map, each whole on the edge nearest to it.
-    let inset = (MARKER_RADIUS as f64 + 0.5) / MAP_SCALE; // to its middle pixel's middle
+    let inset = (MARKER_RADIUS as f64 + 0.5) / MAP_SCALE; // a centre this far in keeps it whole
     let fit = |value: f64, corner: f64| value.clamp(corner + inset, corner + MAP_SIDE - inset);
     for (point, color) in [(scene.light, LIGHT_COLOR), (camera.position, CAMERA_COLOR)] {
         let middle = vec3(fit(point.x, MAP_CORNER.x), 0.0, fit(point.z, MAP_CORNER.z));
@@ -459,7 +459,8 @@ pub fn moved(mut camera: Camera, keys: &[Key], dt: f64) -> Camera {
     camera
 }
 
-const RESEND_EVERY: u64 = 30; // at rest every 30th step sends the frame again: twice a second
+const STEPS_PER_SECOND: usize = 60; // not minifb's 250: at rest the loop mostly sleeps
+const RESEND_EVERY: usize = STEPS_PER_SECOND / 2; // at rest a step in this many sends the frame
 
 fn main() {
     let title = "raytracer - W A S D R F move, arrows turn, Home: back to the start, Esc quits";
@@ -476,7 +477,7 @@ fn main() {
         }
         std::process::exit(1)
     });
-    window.set_target_fps(60); // 60 steps a second, not minifb's 250: at rest it mostly sleeps
+    window.set_target_fps(STEPS_PER_SECOND);
     let scene = Scene::default();
     let mut camera = Camera::default();
     let mut frame = vec![BACKGROUND; WIDTH * VIEW];

@@ -101,7 +101,7 @@ impl Camera {
     /// Step 4: the primary ray through (x, y), in pixels from the screen's top left, from O = E.
     pub fn primary_ray(&self, x: f64, y: f64) -> Ray {
         let (forward, right, up) = self.axes(); // V, right, up
-        // C, p0, p1 and p2 relative to E: D = p(u, v) - E without adding E and taking it away.
+        // C, p0, p1, p2 relative to E, as in floats (E + x) - E is not x: a level row would tilt.
         let center = forward * SCREEN_DISTANCE;
         let p0 = center - right - up;
         let p1 = center + right - up;
@@ -338,11 +338,11 @@ fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
 /// Draws p(t), from <= t <= ray.t, a dot every map pixel, clipped to the map by the slab method:
 /// in x, then in z, p(t) is over the map between the t where it crosses one edge and the other.
 fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
-    let origin = (ray.origin - MAP_CORNER) * MAP_SCALE; // O and D in map pixels, not world units
-    let direction = ray.direction * MAP_SCALE;
+    let o_on_map = (ray.origin - MAP_CORNER) * MAP_SCALE; // O and D in map pixels, not world units
+    let d_on_map = ray.direction * MAP_SCALE;
     let mut enter = from;
     let mut leave = ray.t;
-    for (o, d) in [(origin.x, direction.x), (origin.z, direction.z)] {
+    for (o, d) in [(o_on_map.x, d_on_map.x), (o_on_map.z, d_on_map.z)] {
         if d == 0.0 {
             continue; // it runs along these edges, never across; plot leaves out what is off them
         }
@@ -351,7 +351,7 @@ fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
         enter = enter.max(at_0.min(at_view));
         leave = leave.min(at_0.max(at_view));
     }
-    let pixels_per_t = direction.x.hypot(direction.z); // along the map
+    let pixels_per_t = d_on_map.x.hypot(d_on_map.z); // along the map
     if enter >= leave || pixels_per_t == 0.0 {
         return; // it misses the map, or runs straight up or down: no length on the map
     }

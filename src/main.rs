@@ -198,11 +198,11 @@ impl Default for Scene {
 }
 
 // Steps 6, 8, 9, shading: colour = surface × (ambient + (1 - ambient) N.L if the shadow ray reaches
-// the light) × ODD_SQUARE on odd squares, mixed by reflectivity with what R = D - 2(D.N)N sees.
+// the light) × ODD_SQUARE_BRIGHTNESS on an odd square, mixed by reflectivity with what R sees.
 const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
 const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
 const LIFT: f64 = 1e-6; // a leaving ray starts this far off, times 1 + |P|, as P's rounding grows
-const ODD_SQUARE: f64 = 0.25; // odd squares are this bright beside the even ones
+const ODD_SQUARE_BRIGHTNESS: f64 = 0.25; // odd squares are this bright beside the even ones
 
 struct Hit {
     point: Vec3,  // where a ray hits
@@ -266,7 +266,7 @@ impl Scene {
             brightness += (1.0 - AMBIENT) * shadow.direction.dot(hit.normal);
         }
         if hit.material.checkered && odd_square(hit.point) {
-            brightness *= ODD_SQUARE;
+            brightness *= ODD_SQUARE_BRIGHTNESS;
         }
         let color = hit.material.color * brightness;
         let reflectivity = hit.material.reflectivity;

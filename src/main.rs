@@ -211,7 +211,7 @@ struct Hit {
 }
 
 impl Hit {
-    /// A ray leaving the hit, lifted off it along N: else rounding could make it hit its surface.
+    /// A ray leaving the hit, lifted along N to miss its own surface, which t > ε can't if grazing.
     fn outgoing(&self, direction: Vec3, t: f64) -> Ray {
         let lift = self.normal * (LIFT * (1.0 + self.point.length()));
         Ray::new(self.point + lift, direction, t)
@@ -279,8 +279,8 @@ impl Scene {
 }
 
 /// Step 8, the slide's checkerboard F = ((int)(2 λ1) + (int)λ2) & 1, λ1 = x, λ2 = z: unit squares
-/// (no 2); floor for (int), as truncating would merge the squares either side of 0; and the sum
-/// kept in floats, as far out it is past what an integer holds.
+/// (no 2, which would halve them in x); floor for (int), as truncating would merge the squares
+/// either side of 0; and the sum kept in floats, as far out it is past what an integer holds.
 fn odd_square(point: Vec3) -> bool {
     (point.x.floor() + point.z.floor()).rem_euclid(2.0) == 1.0 // & 1: the sum mod 2
 }
@@ -499,7 +499,7 @@ fn main() {
                 .update_with_buffer(&frame, WIDTH, VIEW)
                 .expect("a frame the window's size");
         } else {
-            window.update(); // at rest: reads the keys, paces the loop, renders and sends nothing
+            window.update(); // at rest: reads the keys and paces the loop; nothing rendered or sent
         }
         steps_at_rest += 1;
     }

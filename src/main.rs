@@ -423,8 +423,8 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     }
     // From the screen on, t = d / D.V: before it the rays would bury the eye and the screen.
     for ray in sampled() {
-        let screen = SCREEN_DISTANCE / ray.direction.dot(forward);
-        follow(frame, scene, ray, screen, RAY_COLOR, MISS_COLOR);
+        let at_screen = SCREEN_DISTANCE / ray.direction.dot(forward);
+        follow(frame, scene, ray, at_screen, RAY_COLOR, MISS_COLOR);
     }
     let row_start = camera.position + forward * SCREEN_DISTANCE - right; // the row from C - right
     draw_ray(frame, &Ray::new(row_start, right, 2.0), 0.0, CAMERA_COLOR); // to C + right
@@ -481,7 +481,7 @@ fn main() {
     let scene = Scene::default();
     let mut camera = Camera::default();
     let mut frame = vec![BACKGROUND; WIDTH * VIEW];
-    let mut rendered = None; // the camera `frame` shows: a frame is rendered only after a move
+    let mut rendered = None; // the camera `frame` shows, none at first: render when it differs
     let mut steps_at_rest = 0; // re-sent, the frame shows again in a window uncovered or resized
     let mut stale = Vec::new(); // keys held when the focus left: ignored until let go
     let mut last_step = Instant::now(); // the camera moves by speed × each step's time

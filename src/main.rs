@@ -429,7 +429,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     let row_start = camera.position + forward * SCREEN_DISTANCE - right; // the row from C - right
     draw_ray(frame, &Ray::new(row_start, right, 2.0), 0.0, CAMERA_COLOR); // to C + right
     // The light's marker, then the eye's; off the map, each whole on the edge nearest to it.
-    let inset = (MARKER_RADIUS as f64 + 0.5) / MAP_SCALE; // a centre this far in keeps it whole
+    let inset = (MARKER_RADIUS as f64 + 0.5) / MAP_SCALE; // its square's half width: all on the map
     let fit = |value: f64, corner: f64| value.clamp(corner + inset, corner + MAP_SIDE - inset);
     for (point, color) in [(scene.light, LIGHT_COLOR), (camera.position, CAMERA_COLOR)] {
         let middle = vec3(fit(point.x, MAP_CORNER.x), 0.0, fit(point.z, MAP_CORNER.z));
@@ -459,7 +459,7 @@ pub fn moved(mut camera: Camera, keys: &[Key], dt: f64) -> Camera {
     camera
 }
 
-const STEPS_PER_SECOND: usize = 60; // not minifb's 250: at rest the loop mostly sleeps
+const STEPS_PER_SECOND: usize = 60; // a screen's rate: at rest each step mostly sleeps
 const RESEND_EVERY: usize = STEPS_PER_SECOND / 2; // at rest a step in this many sends the frame
 
 fn main() {

@@ -1,32 +1,32 @@
-//! A Whitted-style ray tracer in one file; beside its 3D view, a top-down 2D slice of the scene.
+// A Whitted-style ray tracer in one file; beside its 3D view, a top-down 2D slice of the scene.
 use minifb::{Key, ScaleMode, Window, WindowOptions};
 use std::f64::consts::{FRAC_PI_2, TAU};
 use std::ops::{Add, Mul, Sub};
 use std::time::Instant;
 
-pub const VIEW: usize = 512; // each half of the window is VIEW x VIEW pixels
-pub const WIDTH: usize = 2 * VIEW; // a row of the frame: the 3D view, then the 2D slice
+const VIEW: usize = 512; // each half of the window is VIEW x VIEW pixels
+const WIDTH: usize = 2 * VIEW; // a row of the frame: the 3D view, then the 2D slice
 
 // Vector math: points, directions and colours (x, y, z = red, green, blue) are all a Vec3.
 #[derive(Clone, Copy, Default, PartialEq)]
-pub struct Vec3 {
-    pub x: f64,
-    pub y: f64,
-    pub z: f64,
+struct Vec3 {
+    x: f64,
+    y: f64,
+    z: f64,
 }
 
-pub const fn vec3(x: f64, y: f64, z: f64) -> Vec3 {
+const fn vec3(x: f64, y: f64, z: f64) -> Vec3 {
     Vec3 { x, y, z }
 }
 
 impl Vec3 {
-    pub fn dot(self, other: Vec3) -> f64 {
+    fn dot(self, other: Vec3) -> f64 {
         self.x * other.x + self.y * other.y + self.z * other.z
     }
-    pub fn length(self) -> f64 {
+    fn length(self) -> f64 {
         self.dot(self).sqrt()
     }
-    pub fn normalize(self) -> Vec3 {
+    fn normalize(self) -> Vec3 {
         let length = self.length();
         vec3(self.x / length, self.y / length, self.z / length)
     }
@@ -54,14 +54,14 @@ impl Mul<f64> for Vec3 {
 }
 
 // Step 2, the ray: p(t) = O + tD with D normalized and 0 < t < ray.t, the distance it reaches.
-pub struct Ray {
+struct Ray {
     origin: Vec3,
     direction: Vec3,
     t: f64,
 }
 
 impl Ray {
-    pub fn new(origin: Vec3, direction: Vec3, t: f64) -> Ray {
+    fn new(origin: Vec3, direction: Vec3, t: f64) -> Ray {
         Ray {
             origin,
             direction: direction.normalize(), // D normalized: t is then the distance along the ray
@@ -76,10 +76,10 @@ impl Ray {
 const SCREEN_DISTANCE: f64 = 1.0; // the slide's d: a screen 2 wide at distance 1 sees 90 degrees
 
 #[derive(Clone, Copy, Default, PartialEq)]
-pub struct Camera {
-    pub position: Vec3,
-    pub yaw: f64,   // radians about +y; positive turns the view left
-    pub pitch: f64, // radians; positive looks up
+struct Camera {
+    position: Vec3,
+    yaw: f64,   // radians about +y; positive turns the view left
+    pitch: f64, // radians; positive looks up
 }
 
 /// The unit direction `yaw` radians left of -z about +y and `pitch` radians up from level.
@@ -99,7 +99,7 @@ impl Camera {
         )
     }
     /// Step 4: the primary ray through (x, y), in pixels from the screen's top left, from O = E.
-    pub fn primary_ray(&self, x: f64, y: f64) -> Ray {
+    fn primary_ray(&self, x: f64, y: f64) -> Ray {
         let (forward, right, up) = self.axes(); // V, right, up
         // C, p0, p1, p2 relative to E, as in floats (E + x) - E is not x: a level row would tilt.
         let center = forward * SCREEN_DISTANCE;
@@ -115,14 +115,14 @@ impl Camera {
 
 // Step 3, the slide's Primitive class with its Sphere and Plane subclasses: in Rust an enum, a
 // variant for each subclass. The sphere is (p - C).(p - C) = r², the plane p.N + d = 0.
-pub enum Primitive {
+enum Primitive {
     Sphere { center: Vec3, radius: f64 },
     Plane { normal: Vec3, offset: f64 }, // N normalized, d = offset
 }
 
 impl Primitive {
     /// Step 5: the distance t of the ray's first hit with 0 < t < ray.t, if any.
-    pub fn intersect(&self, ray: &Ray) -> Option<f64> {
+    fn intersect(&self, ray: &Ray) -> Option<f64> {
         let ahead = |t| (t > 0.0 && t < ray.t).then_some(t);
         match *self {
             // t = -(O.N + d) / (D.N); a ray parallel to the plane (D.N = 0) misses it.
@@ -152,16 +152,16 @@ impl Primitive {
 
 // The scene: the objects, each with its material, one point light and a flat sky.
 #[derive(Clone, Copy)]
-pub struct Material {
-    pub color: Vec3,
-    pub reflectivity: f64, // 0 is matte, 1 a perfect mirror
-    pub checkered: bool,   // a checkerboard of unit squares in x and z, as on the floor
+struct Material {
+    color: Vec3,
+    reflectivity: f64, // 0 is matte, 1 a perfect mirror
+    checkered: bool,   // a checkerboard of unit squares in x and z, as on the floor
 }
 
-pub struct Scene {
-    pub objects: Vec<(Primitive, Material)>,
-    pub light: Vec3,
-    pub sky: Vec3,
+struct Scene {
+    objects: Vec<(Primitive, Material)>,
+    light: Vec3,
+    sky: Vec3,
 }
 
 impl Default for Scene {
@@ -255,7 +255,7 @@ impl Scene {
     }
 
     /// Step 9: the colour a ray brings back, `depth` mirror bounces deep; the sky if it hits none.
-    pub fn trace(&self, mut ray: Ray, depth: u32) -> Vec3 {
+    fn trace(&self, mut ray: Ray, depth: u32) -> Vec3 {
         let Some(hit) = self.nearest_hit(&mut ray) else {
             return self.sky;
         };
@@ -286,7 +286,7 @@ fn odd_square(point: Vec3) -> bool {
 }
 
 // Rendering, the slide's step 6: each pixel of the 3D view its primary ray's colour; then the map.
-pub fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
+fn render(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     for y in 0..VIEW {
         for x in 0..VIEW {
             let ray = camera.primary_ray(x as f64 + 0.5, y as f64 + 0.5); // the pixel's centre
@@ -304,22 +304,22 @@ fn to_rgb(color: Vec3) -> u32 {
 // The 2D slice, the assignment's "for y = 0, visualize every 10th ray", seen from above (x to the
 // right, -z up): the plane of the screen's middle row, through the eye along V and right. It is
 // y = 0 in the start pose and tilts with the camera, so that the sampled rays always lie in it.
-pub const MAP_CORNER: Vec3 = vec3(-6.4, 0.0, -9.4); // the map's top left x and z
+const MAP_CORNER: Vec3 = vec3(-6.4, 0.0, -9.4); // the map's top left x and z
 const MAP_SIDE: f64 = 12.8; // the map shows 12.8 x 12.8 units around the demo, at any VIEW
-pub const MAP_SCALE: f64 = VIEW as f64 / MAP_SIDE; // map pixels per world unit
+const MAP_SCALE: f64 = VIEW as f64 / MAP_SIDE; // map pixels per world unit
 const SAMPLED_EVERY: usize = 10; // the assignment's "every 10th ray"
 const DOT_RADIUS: i32 = 1; // a hit's dot is 3 x 3 map pixels: 1 either side of its point
 const MARKER_RADIUS: i32 = 3; // the light and the eye are 7 x 7
 const OUTLINE_CHORDS: usize = 256; // a circle is drawn as 256 short straight chords
 // Colours no two alike, also to red-green colour-blind eyes, the most important the brightest.
-pub const BACKGROUND: u32 = 0x000000; // black
-pub const CAMERA_COLOR: u32 = 0xff20c0; // pink: the eye and the screen's middle row
-pub const RAY_COLOR: u32 = 0xffff00; // yellow: a sampled ray, from the screen to its hit
-pub const MISS_COLOR: u32 = 0x80a0ff; // sky blue: a sampled ray that sees the sky
-pub const LIGHT_COLOR: u32 = 0xff8000; // orange: the light
-pub const SHADOW_COLOR: u32 = 0x802000; // rust: a shadow ray that reaches the light
-pub const BLOCKED_COLOR: u32 = 0x6040a0; // violet: a shadow ray up to what blocks it, a dot there
-pub const MIRROR_COLOR: u32 = 0x008080; // teal: a mirror ray to its hit, a dot there, or the edge
+const BACKGROUND: u32 = 0x000000; // black
+const CAMERA_COLOR: u32 = 0xff20c0; // pink: the eye and the screen's middle row
+const RAY_COLOR: u32 = 0xffff00; // yellow: a sampled ray, from the screen to its hit
+const MISS_COLOR: u32 = 0x80a0ff; // sky blue: a sampled ray that sees the sky
+const LIGHT_COLOR: u32 = 0xff8000; // orange: the light
+const SHADOW_COLOR: u32 = 0x802000; // rust: a shadow ray that reaches the light
+const BLOCKED_COLOR: u32 = 0x6040a0; // violet: a shadow ray up to what blocks it, a dot there
+const MIRROR_COLOR: u32 = 0x008080; // teal: a mirror ray to its hit, a dot there, or the edge
 
 /// Colours the map pixels up to `radius` pixels either side of a world point, where on the map.
 fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
@@ -442,7 +442,7 @@ const MOVE_SPEED: f64 = 2.0; // units a second along each held key's direction
 const TURN_SPEED: f64 = 1.5; // radians a second
 
 /// The camera `dt` seconds on with `keys` down, each pair of keys an axis; Home: back to the start.
-pub fn moved(mut camera: Camera, keys: &[Key], dt: f64) -> Camera {
+fn moved(mut camera: Camera, keys: &[Key], dt: f64) -> Camera {
     if keys.contains(&Key::Home) {
         return Camera::default();
     }

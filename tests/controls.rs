@@ -1,16 +1,12 @@
 //! Step 7, the controls: what each key does to the camera in a step of the window's loop, and the
 //! one line the program says when it can open no window.
-#[allow(dead_code)]
-#[path = "../src/main.rs"]
-mod raytracer;
-#[allow(dead_code)]
+#![allow(dead_code)] // each test file uses only part of the program
+include!("../src/main.rs"); // the program itself: its items in reach with no `pub`
 #[path = "support/scenes.rs"]
 mod scenes;
 
-use minifb::Key;
-use raytracer::*;
 use scenes::*;
-use std::f64::consts::FRAC_PI_2;
+
 use std::process::Command;
 
 /// A camera away from the start, turned and tilted, so that each direction is a different one.
@@ -34,7 +30,7 @@ fn w_and_s_move_forward_and_back_along_the_view() {
     let camera = somewhere();
     let (view, ..) = camera_axes(&camera);
     for (keys, sign) in [([Key::W], 1.0), ([Key::S], -1.0)] {
-        let expected = camera.position + view * (sign * MOVE_SPEED * DT);
+        let expected = camera.position + view * (sign * README_MOVE_SPEED * DT);
         let after = moved(camera, &keys, DT);
         assert!(
             same(after.position, expected),
@@ -50,7 +46,7 @@ fn a_and_d_move_left_and_right_level() {
     let camera = somewhere();
     let (_, right, _) = camera_axes(&camera);
     for (keys, sign) in [([Key::D], 1.0), ([Key::A], -1.0)] {
-        let expected = camera.position + right * (sign * MOVE_SPEED * DT);
+        let expected = camera.position + right * (sign * README_MOVE_SPEED * DT);
         let after = moved(camera, &keys, DT);
         assert!(
             same(after.position, expected),
@@ -65,7 +61,7 @@ fn a_and_d_move_left_and_right_level() {
 fn r_and_f_move_straight_up_and_down() {
     let camera = somewhere();
     for (keys, sign) in [([Key::R], 1.0), ([Key::F], -1.0)] {
-        let expected = camera.position + vec3(0.0, sign * MOVE_SPEED * DT, 0.0);
+        let expected = camera.position + vec3(0.0, sign * README_MOVE_SPEED * DT, 0.0);
         let after = moved(camera, &keys, DT);
         assert!(
             same(after.position, expected),
@@ -79,7 +75,7 @@ fn r_and_f_move_straight_up_and_down() {
 #[test]
 fn the_arrows_turn_left_and_right_and_tilt_up_and_down() {
     let camera = somewhere();
-    let turn = TURN_SPEED * DT;
+    let turn = README_TURN_SPEED * DT;
     let cases = [
         (Key::Left, camera.yaw + turn, camera.pitch),
         (Key::Right, camera.yaw - turn, camera.pitch),
@@ -125,7 +121,7 @@ fn a_pair_of_opposite_keys_held_together_cancel_out() {
 
 #[test]
 fn tilting_stops_at_straight_up_and_straight_down() {
-    // Held for LONG_HOLD seconds, the tilt would reach 15 radians at TURN_SPEED: far past π/2.
+    // Held for LONG_HOLD seconds, the tilt would reach 15 radians at README_TURN_SPEED: far past π/2.
     const LONG_HOLD: f64 = 10.0;
     for (key, most) in [(Key::Up, FRAC_PI_2), (Key::Down, -FRAC_PI_2)] {
         let pitch = moved(somewhere(), &[key], LONG_HOLD).pitch;

@@ -1,17 +1,13 @@
 //! `cargo run --example frame`, the README's way to see a frame with no display: the PNG it writes
 //! holds exactly the frame `render` makes of the demo's scene from the pose given, and a bad
 //! argument gets one line, not a panic. (`cargo test` builds the example beside the tests.)
-#[allow(dead_code)]
+#![allow(dead_code)] // each test file uses only part of the program
+include!("../src/main.rs"); // the program itself: its items in reach with no `pub`
 #[path = "support/picture.rs"]
 mod picture;
-#[allow(dead_code)]
-#[path = "../src/main.rs"]
-mod raytracer;
-#[allow(dead_code)]
 #[path = "support/scenes.rs"]
 mod scenes;
 
-use raytracer::*;
 use scenes::camera_at;
 use std::path::PathBuf;
 use std::process::{Command, Output};

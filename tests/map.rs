@@ -2,17 +2,13 @@
 //! the screen, the light, the spheres where the plane cuts them, and every 10th ray of that row
 //! with its hit, shadow and mirror rays. Each test finds, by its own geometry, where a thing must
 //! be drawn, and looks for its colour there.
-#[allow(dead_code)]
-#[path = "../src/main.rs"]
-mod raytracer;
-#[allow(dead_code)]
+#![allow(dead_code)] // each test file uses only part of the program
+include!("../src/main.rs"); // the program itself: its items in reach with no `pub`
 #[path = "support/scenes.rs"]
 mod scenes;
-#[allow(dead_code)]
 #[path = "support/vision.rs"]
 mod vision;
 
-use raytracer::*;
 use scenes::*;
 
 /// What a test of the sampled rays adds when it fails: it finds them as the README gives them.
@@ -20,8 +16,6 @@ fn sampled_rays() -> String {
     holds(&[SAMPLED_FIGURE, SCREEN_FIGURE])
 }
 
-/// The map's side in world units, whatever VIEW is.
-const MAP_SIDE: f64 = VIEW as f64 / MAP_SCALE;
 /// The map pixel over a world point's x and z: x to the right, -z up, from MAP_CORNER.
 fn map_pixel(frame: &[u32], point: Vec3) -> u32 {
     let column = ((point.x - MAP_CORNER.x) * MAP_SCALE) as usize;
@@ -116,14 +110,14 @@ fn the_eye_is_a_pink_square_7_map_pixels_wide() {
     let scene = scene_of(vec![], vec3(0.0, 5.0, 2.0));
     for camera in two_poses() {
         let frame = frame_of(&scene, &camera);
-        if let Err(seen) = square_at(&frame, camera.position, MARKER_REACH, CAMERA_COLOR) {
+        if let Err(seen) = square_at(&frame, camera.position, README_MARKER_REACH, CAMERA_COLOR) {
             panic!(
                 "{camera:?}: no CAMERA_COLOR square 7 map pixels wide at the eye, {seen}. {}",
                 holds(&[MARKER_FIGURE])
             );
         }
         assert!(
-            !ring(&frame, camera.position, MARKER_REACH + 1).contains(&CAMERA_COLOR),
+            !ring(&frame, camera.position, README_MARKER_REACH + 1).contains(&CAMERA_COLOR),
             "{camera:?}: the eye's square is wider than 7 map pixels. {}",
             holds(&[MARKER_FIGURE])
         );
@@ -138,7 +132,7 @@ fn the_screens_middle_row_is_a_pink_line_from_c_minus_right_to_c_plus_right() {
     for camera in two_poses() {
         let frame = frame_of(&scene, &camera);
         let (view, right, _) = camera_axes(&camera);
-        let middle = camera.position + view * SCREEN_DISTANCE;
+        let middle = camera.position + view * README_SCREEN_DISTANCE;
         let near_end = 1.0 - 3.0 / MAP_SCALE;
         for along in [-near_end, -0.5, 0.5, near_end] {
             let on_row = middle + right * along;
@@ -165,14 +159,14 @@ fn the_screens_middle_row_is_a_pink_line_from_c_minus_right_to_c_plus_right() {
 fn the_light_is_an_orange_square_7_map_pixels_wide() {
     let light = vec3(-2.0, 5.0, 2.0);
     let frame = frame_of(&scene_of(vec![], light), &Camera::default());
-    if let Err(seen) = square_at(&frame, light, MARKER_REACH, LIGHT_COLOR) {
+    if let Err(seen) = square_at(&frame, light, README_MARKER_REACH, LIGHT_COLOR) {
         panic!(
             "no LIGHT_COLOR square 7 map pixels wide under the light at {light:?}, {seen}. {}",
             holds(&[MARKER_FIGURE])
         );
     }
     assert!(
-        !ring(&frame, light, MARKER_REACH + 1).contains(&LIGHT_COLOR),
+        !ring(&frame, light, README_MARKER_REACH + 1).contains(&LIGHT_COLOR),
         "the light's square is wider than 7 map pixels. {}",
         holds(&[MARKER_FIGURE])
     );
@@ -181,9 +175,9 @@ fn the_light_is_an_orange_square_7_map_pixels_wide() {
 #[test]
 fn off_the_map_the_eye_and_the_light_stand_whole_on_the_nearest_edge() {
     let last = (VIEW - 1) as i32;
-    let reach = MARKER_REACH;
+    let reach = README_MARKER_REACH;
     // Points off the map behind it, beside it and past two corners: the marker's middle map
-    // pixel, MARKER_REACH pixels in from each edge it is past, and its other coordinate where the
+    // pixel, README_MARKER_REACH pixels in from each edge it is past, and its other coordinate where the
     // point is.
     let column = |x: f64| ((x - MAP_CORNER.x) * MAP_SCALE) as i32;
     let row = |z: f64| ((z - MAP_CORNER.z) * MAP_SCALE) as i32;
@@ -484,7 +478,7 @@ fn a_mirror_ray_leaves_each_sampled_hit_on_a_mirror_along_r() {
     let under_a_sampled_ray = |point: Vec3| {
         sampled.iter().any(|&(d, hit)| {
             let end = hit.map_or(f64::INFINITY, |hit| hit.length());
-            let t = point.dot(d).clamp(SCREEN_DISTANCE, end);
+            let t = point.dot(d).clamp(README_SCREEN_DISTANCE, end);
             (point - d * t).length() < 2.0 / MAP_SCALE
         })
     };
@@ -531,7 +525,7 @@ fn the_sampled_rays_start_at_the_screen() {
         let (view, ..) = camera_axes(&camera);
         for direction in sampled_directions(&camera) {
             let unit = direction.normalize();
-            let screen = SCREEN_DISTANCE / unit.dot(view); // where it meets the screen: t = d / D.V
+            let screen = README_SCREEN_DISTANCE / unit.dot(view); // where it meets the screen: t = d / D.V
             let pixel = 1.0 / (unit.x.hypot(unit.z) * MAP_SCALE); // t for a map pixel along it
             let at = |t: f64| camera.position + unit * t;
             // From past the eye's marker to 6 map pixels before the screen's row (the rays beside

@@ -4,23 +4,17 @@
 //! tells the truth: a student's own scene makes them fail, and that is fine. They are ignored by
 //! `cargo test`; CI runs them with `cargo test --no-fail-fast -- --include-ignored`. Each names
 //! every stale claim it finds at once, and how to bring it back.
-#[allow(dead_code)]
+#![allow(dead_code)] // each test file uses only part of the program
+include!("../src/main.rs"); // the program itself: its items in reach with no `pub`
 #[path = "support/picture.rs"]
 mod picture;
-#[allow(dead_code)]
-#[path = "../src/main.rs"]
-mod raytracer;
-#[allow(dead_code)]
 #[path = "support/scenes.rs"]
 mod scenes;
-#[allow(dead_code)]
 #[path = "support/tokens.rs"]
 mod tokens;
-#[allow(dead_code)]
 #[path = "support/vision.rs"]
 mod vision;
 
-use raytracer::*;
 use scenes::{LEGEND, map_of};
 use std::fs;
 
@@ -65,7 +59,7 @@ fn the_readme_pictures_are_the_demos_frames() {
         let path = format!("{}/{name}", env!("CARGO_MANIFEST_DIR"));
         let frame = demo_frame(&camera);
         if std::env::var_os("UPDATE_PICTURE").is_some() {
-            picture::write_png(&path, &frame).unwrap_or_else(|error| panic!("{error}"));
+            picture::write_png(&path, &frame, WIDTH).unwrap_or_else(|error| panic!("{error}"));
             println!("wrote {name}: look at it before committing it");
             continue;
         }

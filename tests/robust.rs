@@ -1,19 +1,14 @@
 //! Any camera, any scene: every colour a number from 0 to 1, every frame whole, every hit the
 //! nearest root, also far from the origin where rounding grows.
-#[allow(dead_code)]
+#![allow(dead_code)] // each test file uses only part of the program
+include!("../src/main.rs"); // the program itself: its items in reach with no `pub`
 #[path = "support/random.rs"]
 mod random;
-#[allow(dead_code)]
-#[path = "../src/main.rs"]
-mod raytracer;
-#[allow(dead_code)]
 #[path = "support/scenes.rs"]
 mod scenes;
 
 use random::Random;
-use raytracer::*;
 use scenes::*;
-use std::f64::consts::{FRAC_PI_2, TAU};
 
 /// How far a channel may come out past 1 by rounding: a mix of two colours, or N.L of two unit
 /// vectors, is a few parts in 10^16 off at most.
@@ -313,7 +308,7 @@ fn a_floor_hit_10_to_the_19_units_out_has_the_floors_colour() {
     let scene = scene_of(vec![checkered_floor()], vec3(0.0, 5.0, 0.0));
     let ray = Ray::new(vec3(0.0, 0.0, 0.0), vec3(1.0, -1e-19, 1.0), f64::INFINITY);
     let color = scene.trace(ray, 0);
-    let expected = WHITE * AMBIENT;
+    let expected = WHITE * README_AMBIENT;
     assert!(
         (color - expected).length() < ROUNDING,
         "the far floor should show {expected:?}, an even square in the ambient light, not \
@@ -342,7 +337,7 @@ fn cameras_on_surfaces_and_far_away_give_colours_from_0_to_1() {
 }
 
 /// How near 1 a fully lit white surface must come out: rounding tilts L off N by far less, and a
-/// shadow ray that hit the plane it leaves would give AMBIENT, 0.1.
+/// shadow ray that hit the plane it leaves would give README_AMBIENT, 0.1.
 const FULLY_LIT: f64 = 1e-3;
 
 #[test]
@@ -352,7 +347,7 @@ fn far_away_a_ray_leaving_a_plane_does_not_hit_it_again() {
     // to 10^-2: a fixed lift of 10^-2 or less fails here, LIFT × (1 + |point|) does not.
     // Alone in the scene, the plane as a black half mirror shows half the sky (its mirror ray
     // leaves it), and as a white matte surface under a light straight above, it is fully lit
-    // (its shadow ray leaves it; hitting it again would give AMBIENT, 0.1).
+    // (its shadow ray leaves it; hitting it again would give README_AMBIENT, 0.1).
     let sky = vec3(1.0, 1.0, 1.0);
     let mut random = Random::new(11);
     for case in 0..3000 {

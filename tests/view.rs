@@ -1,16 +1,13 @@
 //! The 3D view, the assignment's steps 1 to 6, 8 and 9: camera, intersections, shading, shadows,
 //! the checkerboard and reflections, each checked where the test works out itself: on a pixel, or
 //! along a ray it traces.
-#[allow(dead_code)]
-#[path = "../src/main.rs"]
-mod raytracer;
-#[allow(dead_code)]
+#![allow(dead_code)] // each test file uses only part of the program
+include!("../src/main.rs"); // the program itself: its items in reach with no `pub`
 #[path = "support/scenes.rs"]
 mod scenes;
 
-use raytracer::*;
 use scenes::*;
-use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2};
+use std::f64::consts::FRAC_1_SQRT_2;
 
 /// A pixel counts as red where its red byte is over this many times its green and its blue: a
 /// RED ball shows 9 times, however lit; the sky and the floor never more than once.
@@ -155,7 +152,7 @@ fn a_sphere_between_the_floor_and_the_light_casts_a_shadow() {
     let lit = project(&camera, vec3(-2.5, FLOOR_Y, -4.2));
     let up = vec3(0.0, 1.0, 0.0);
     for (what, pixel, light_share) in [
-        ("in the shadow, ambient only", shaded, AMBIENT),
+        ("in the shadow, ambient only", shaded, README_AMBIENT),
         (
             "beside the shadow, lit",
             lit,
@@ -219,7 +216,7 @@ fn the_floor_is_checkered_by_floor_x_plus_floor_z() {
         for z in [-1.5, -0.5, 0.5, 1.5] {
             let point = vec3(x, FLOOR_Y, z);
             let green = rgb(&frame, project(&camera, point))[1];
-            let odd = odd_square(point);
+            let odd = on_an_odd_square(point);
             assert!(
                 is_dark(green, point, HIGH_LIGHT) == odd,
                 "the floor at x = {x}, z = {z} is on an {} square: it should look {}, yet shows \
@@ -235,13 +232,13 @@ fn the_floor_is_checkered_by_floor_x_plus_floor_z() {
 #[test]
 fn the_floors_odd_squares_show_a_quarter_of_the_light() {
     // Lit from high above, each point shows the lit share of white, on an odd square a quarter
-    // of it: ODD_SQUARE, the README's figure.
+    // of it: README_ODD_SQUARE, the README's figure.
     let (camera, frame) = floor_from_above();
     let up = vec3(0.0, 1.0, 0.0);
     for x in [-0.5, 0.5] {
         let pixel = project(&camera, vec3(x, FLOOR_Y, -0.5));
         let point = floor_seen(&camera, pixel);
-        let odd = odd_square(point);
+        let odd = on_an_odd_square(point);
         let green = rgb(&frame, pixel)[1];
         let expected = byte(WHITE.y * lit_share(point, up, HIGH_LIGHT) * square_share(point));
         assert!(
@@ -295,8 +292,8 @@ fn a_mirror_ball_reflects_the_checkered_floor_and_the_sky() {
     // down to a floor square, which shows bright or dark unless the point is near a square's edge
     // or in the ball's shadow.
     let near_edge = |w: f64| {
-        let squares = w / SQUARE_SIZE; // from the nearest edge, in squares
-        (squares - squares.round()).abs() * SQUARE_SIZE < EDGE_BAND
+        let squares = w / README_SQUARE_SIZE; // from the nearest edge, in squares
+        (squares - squares.round()).abs() * README_SQUARE_SIZE < EDGE_BAND
     };
     for y in (0..VIEW).step_by(EVERY) {
         for x in (0..VIEW).step_by(EVERY) {
@@ -319,7 +316,7 @@ fn a_mirror_ball_reflects_the_checkered_floor_and_the_sky() {
             if segment_hits_sphere(on_floor, light, center, 1.0) {
                 continue;
             }
-            let odd = odd_square(on_floor);
+            let odd = on_an_odd_square(on_floor);
             assert!(
                 is_dark(seen[1], on_floor, light) == odd,
                 "pixel {x}, {y} should reflect the floor point {on_floor:?}, on an {} square, \
@@ -405,7 +402,7 @@ fn facing_mirrors_stop_after_the_readmes_five_bounces() {
         let point = vec3(0.0, height, -0.1 - 0.2 * f64::from(k));
         (mirror, point, lit_share(point, normal, scene.light))
     };
-    let (last_mirror, last_point, expected) = bounce(BOUNCES);
+    let (last_mirror, last_point, expected) = bounce(README_BOUNCES);
     // Which mirror the colour comes from: only the floor's red, or only the ceiling's blue.
     let (ended_on, shown) = match (color.x > 0.0, color.y > 0.0, color.z > 0.0) {
         (true, false, false) => ("the red floor", color.x),
@@ -415,20 +412,22 @@ fn facing_mirrors_stop_after_the_readmes_five_bounces() {
     if ended_on == last_mirror && (shown - expected).abs() < BOUNCE_SLACK {
         return;
     }
-    let seen_as = (0..=2 * BOUNCES)
+    let seen_as = (0..=2 * README_BOUNCES)
         .map(bounce)
         .position(|(mirror, _, lit)| mirror == ended_on && (shown - lit).abs() < BOUNCE_SLACK);
     let why = match seen_as {
         Some(k) => format!(
             "it ended on {ended_on} lit {shown:.3}, as bounce {k} is: the recursion stops at \
-             another depth than MAX_DEPTH = {BOUNCES}, or the mirror ray R = D - 2(D.N)N goes \
+             another depth than MAX_DEPTH = {README_BOUNCES}, or the mirror ray R = D - 2(D.N)N goes \
              another way (with its sign flipped it turns back into the mirror it leaves)"
         ),
-        None if ended_on == last_mirror && (shown - AMBIENT).abs() < BOUNCE_SLACK => format!(
-            "it ended there, but lit only by the ambient share, {AMBIENT}: its shadow ray is \
+        None if ended_on == last_mirror && (shown - README_AMBIENT).abs() < BOUNCE_SLACK => {
+            format!(
+                "it ended there, but lit only by the ambient share, {README_AMBIENT}: its shadow ray is \
              blocked, though nothing lies between the point and the light (does the shadow ray \
              stop at the light, t = |L - P|?)"
-        ),
+            )
+        }
         None if ended_on == last_mirror => format!(
             "it ended there, but lit {shown:.3}: ambient + (1 - ambient) N.L is worked out wrong \
              at that point"
@@ -440,7 +439,7 @@ fn facing_mirrors_stop_after_the_readmes_five_bounces() {
         ),
     };
     panic!(
-        "A ray between two facing mirrors should end, after {BOUNCES} bounces, on {last_mirror} \
+        "A ray between two facing mirrors should end, after {README_BOUNCES} bounces, on {last_mirror} \
          at {last_point:?}, lit {expected:.3}; {why}. {}",
         holds(&[BOUNCES_FIGURE, AMBIENT_FIGURE])
     );
@@ -546,7 +545,7 @@ fn a_camera_inside_a_sphere_sees_its_inside() {
         vec3(-3.0, 5.0, 1.0),
     );
     let frame = frame_of(&scene, &camera_at(center, 0.0, 0.0));
-    let expected = bytes(WHITE * AMBIENT);
+    let expected = bytes(WHITE * README_AMBIENT);
     for y in (0..VIEW).step_by(EVERY) {
         for x in (0..VIEW).step_by(EVERY) {
             let seen = rgb(&frame, (x, y));
@@ -569,12 +568,16 @@ fn from_below_the_floor_its_underside_gets_only_ambient_light() {
     let pixel = project(&below, vec3(0.5, FLOOR_Y, -1.5));
     let point = floor_seen(&below, pixel);
     let green = rgb(&frame, pixel)[1];
-    let expected = byte(WHITE.y * AMBIENT * square_share(point));
+    let expected = byte(WHITE.y * README_AMBIENT * square_share(point));
     assert!(
         green == expected,
         "the floor's underside at {point:?}, on an {} square, should show only the ambient \
          light, green {expected}, not {green}. {}",
-        if odd_square(point) { "odd" } else { "even" },
+        if on_an_odd_square(point) {
+            "odd"
+        } else {
+            "even"
+        },
         holds(&[
             AMBIENT_FIGURE,
             SQUARE_FIGURE,
@@ -592,7 +595,7 @@ fn looking_straight_down_shows_the_checkered_floor() {
     let frame = frame_of(&scene, &down);
     for point in [vec3(0.5, FLOOR_Y, 0.5), vec3(-0.5, FLOOR_Y, 0.5)] {
         let green = rgb(&frame, project(&down, point))[1];
-        let odd = odd_square(point);
+        let odd = on_an_odd_square(point);
         assert!(
             is_dark(green, point, light) == odd,
             "looking straight down, the floor point {point:?} is on an {} square: it should look \
@@ -615,7 +618,7 @@ fn a_light_inside_a_sphere_leaves_everything_else_in_shadow() {
     );
     scene.sky = vec3(0.0, 0.0, 0.0);
     let frame = frame_of(&scene, &Camera::default());
-    let most = byte(AMBIENT);
+    let most = byte(README_AMBIENT);
     for y in (0..VIEW).step_by(EVERY) {
         for x in (0..VIEW).step_by(EVERY) {
             let [red, ..] = rgb(&frame, (x, y));

@@ -7,16 +7,13 @@
 //! out; `cargo test --test window -- --include-ignored` runs them, as CI's
 //! `cargo test --no-fail-fast -- --include-ignored` does. They run one at a time (see
 //! tests/support/xwindow.rs, which starts and screenshots everything), about half a minute in all.
-#[allow(dead_code)]
-#[path = "../src/main.rs"]
-mod raytracer;
-#[allow(dead_code)]
+#![allow(dead_code)] // each test file uses only part of the program
+include!("../src/main.rs"); // the program itself: its items in reach with no `pub`
 #[path = "support/xwindow.rs"]
 mod xwindow; // Xvfb, the program, xdotool and screenshots: nothing a reader of the tests needs
 
-use raytracer::*;
 use std::thread::sleep;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 use xwindow::*;
 
 /// How fast a held key moves the camera, as the README gives it.

@@ -1,6 +1,5 @@
 //! Machinery a student need not read: a frame to and from a PNG file, for the README's pictures
 //! and for `cargo run --example frame`.
-use crate::raytracer::{VIEW, WIDTH};
 use std::fs::File;
 use std::io::BufReader;
 
@@ -10,10 +9,11 @@ pub fn rgb_bytes(frame: &[u32]) -> Vec<u8> {
     frame.iter().flat_map(|&pixel| bytes(pixel)).collect()
 }
 
-/// Writes a whole frame, WIDTH x VIEW, as an 8-bit RGB PNG; if it cannot, says why.
-pub fn write_png(path: &str, frame: &[u32]) -> Result<(), String> {
+/// Writes a frame `width` pixels wide as an 8-bit RGB PNG; if it cannot, says why.
+pub fn write_png(path: &str, frame: &[u32], width: usize) -> Result<(), String> {
+    let height = frame.len() / width;
     let file = File::create(path).map_err(|error| format!("cannot write {path}: {error}"))?;
-    let mut encoder = png::Encoder::new(file, WIDTH as u32, VIEW as u32);
+    let mut encoder = png::Encoder::new(file, width as u32, height as u32);
     encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);
     let written = encoder

@@ -1,6 +1,6 @@
 //! Machinery a student need not read: a small pseudo-random generator (xorshift64*, Vigna 2016)
 //! for the tests that try many poses and rays, seeded so that a failure can be replayed.
-use crate::raytracer::{Vec3, vec3};
+use crate::{Vec3, vec3};
 
 pub struct Random {
     state: u64,

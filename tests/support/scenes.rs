@@ -1,7 +1,7 @@
 //! The tests' own scenes and geometry. Each expectation is worked out here from the slides'
 //! formulas (the camera's screen, the ray-sphere quadratic, N.L), with main.rs's vector maths but
 //! none of its tracer; and how the tests print points and poses in their messages.
-use crate::raytracer::*;
+use crate::*;
 use std::fmt;
 
 impl fmt::Debug for Vec3 {
@@ -27,25 +27,26 @@ impl fmt::Debug for Camera {
 /// The figures the README gives, which the tests hold the program to. A test that holds one
 /// names it when it fails: if you changed that figure in src/main.rs on purpose, change it here
 /// too, and the tests follow it.
-pub const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
-pub const ODD_SQUARE: f64 = 0.25; // the floor's odd squares show a quarter of that light
-pub const SQUARE_SIZE: f64 = 1.0; // the floor's squares are 1 unit wide
-pub const BOUNCES: u32 = 5; // mirror bounces a ray is followed through at most
-pub const SCREEN_DISTANCE: f64 = 1.0; // the screen is 1 ahead of the eye, 2 wide and 2 high
-pub const SAMPLED_EVERY: usize = 10; // the map shows every 10th ray of the screen's middle row
-pub const MARKER_REACH: i32 = 3; // the light's and the eye's markers: 3 map pixels either side
-pub const MOVE_SPEED: f64 = 2.0; // units a second along each held key's direction
-pub const TURN_SPEED: f64 = 1.5; // radians a second
+pub const README_AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
+pub const README_ODD_SQUARE: f64 = 0.25; // the floor's odd squares show a quarter of that light
+pub const README_SQUARE_SIZE: f64 = 1.0; // the floor's squares are 1 unit wide
+pub const README_BOUNCES: u32 = 5; // mirror bounces a ray is followed through at most
+pub const README_SCREEN_DISTANCE: f64 = 1.0; // the screen is 1 ahead of the eye, 2 wide and 2 high
+pub const README_SAMPLED_EVERY: usize = 10; // the map shows every 10th ray of the screen's middle row
+pub const README_MARKER_REACH: i32 = 3; // the light's and the eye's markers: 3 map pixels either side
+pub const README_MOVE_SPEED: f64 = 2.0; // units a second along each held key's direction
+pub const README_TURN_SPEED: f64 = 1.5; // radians a second
 
 /// The figures as the README gives them, with their names here, for `holds`.
-pub const AMBIENT_FIGURE: &str = "ambient 0.1 (AMBIENT)";
-pub const ODD_SQUARE_FIGURE: &str = "odd squares a quarter as bright (ODD_SQUARE)";
-pub const SQUARE_FIGURE: &str = "unit squares (SQUARE_SIZE)";
-pub const BOUNCES_FIGURE: &str = "5 bounces (BOUNCES)";
-pub const SCREEN_FIGURE: &str = "screen 1 ahead and 2 wide (SCREEN_DISTANCE)";
-pub const SAMPLED_FIGURE: &str = "every 10th ray (SAMPLED_EVERY)";
-pub const MARKER_FIGURE: &str = "markers 7 pixels wide (MARKER_REACH)";
-pub const SPEED_FIGURE: &str = "2 units and 1.5 radians a second (MOVE_SPEED, TURN_SPEED)";
+pub const AMBIENT_FIGURE: &str = "ambient 0.1 (README_AMBIENT)";
+pub const ODD_SQUARE_FIGURE: &str = "odd squares a quarter as bright (README_ODD_SQUARE)";
+pub const SQUARE_FIGURE: &str = "unit squares (README_SQUARE_SIZE)";
+pub const BOUNCES_FIGURE: &str = "5 bounces (README_BOUNCES)";
+pub const SCREEN_FIGURE: &str = "screen 1 ahead and 2 wide (README_SCREEN_DISTANCE)";
+pub const SAMPLED_FIGURE: &str = "every 10th ray (README_SAMPLED_EVERY)";
+pub const MARKER_FIGURE: &str = "markers 7 pixels wide (README_MARKER_REACH)";
+pub const SPEED_FIGURE: &str =
+    "2 units and 1.5 radians a second (README_MOVE_SPEED, README_TURN_SPEED)";
 
 /// What a failing test adds about the README figures it holds the program to.
 pub fn holds(figures: &[&str]) -> String {
@@ -147,7 +148,7 @@ pub fn pixel_of(color: Vec3) -> u32 {
 /// surface) adds nothing.
 pub fn lit_share(point: Vec3, normal: Vec3, light: Vec3) -> f64 {
     let n_dot_l = normal.dot((light - point).normalize());
-    AMBIENT + (1.0 - AMBIENT) * n_dot_l.max(0.0)
+    README_AMBIENT + (1.0 - README_AMBIENT) * n_dot_l.max(0.0)
 }
 
 fn cross(a: Vec3, b: Vec3) -> Vec3 {
@@ -175,7 +176,7 @@ pub fn camera_axes(camera: &Camera) -> (Vec3, Vec3, Vec3) {
 pub fn project(camera: &Camera, point: Vec3) -> (usize, usize) {
     let (view, right, up) = camera_axes(camera);
     let d = point - camera.position;
-    let ahead = d.dot(view) / SCREEN_DISTANCE;
+    let ahead = d.dot(view) / README_SCREEN_DISTANCE;
     let across = d.dot(right) / ahead; // from -1 at the left edge to 1 at the right
     let upward = d.dot(up) / ahead; // from -1 at the bottom to 1 at the top
     assert!(
@@ -207,7 +208,7 @@ pub fn pixel_direction(camera: &Camera, (x, y): (usize, usize)) -> Vec3 {
     let (view, right, up) = camera_axes(camera);
     let across = (x as f64 + 0.5) / HALF_VIEW - 1.0;
     let upward = 1.0 - (y as f64 + 0.5) / HALF_VIEW;
-    view * SCREEN_DISTANCE + right * across + up * upward
+    view * README_SCREEN_DISTANCE + right * across + up * upward
 }
 
 /// Where the ray through the 3D view's pixel (x, y) meets the floor: t = (FLOOR_Y - E.y) / D.y.
@@ -220,21 +221,25 @@ pub fn floor_seen(camera: &Camera, pixel: (usize, usize)) -> Vec3 {
 pub fn sampled_directions(camera: &Camera) -> Vec<Vec3> {
     let (view, right, _) = camera_axes(camera);
     (0..VIEW)
-        .step_by(SAMPLED_EVERY)
-        .map(|x| view * SCREEN_DISTANCE + right * ((x as f64 + 0.5) / HALF_VIEW - 1.0))
+        .step_by(README_SAMPLED_EVERY)
+        .map(|x| view * README_SCREEN_DISTANCE + right * ((x as f64 + 0.5) / HALF_VIEW - 1.0))
         .collect()
 }
 
-/// The slide's checkerboard F for squares SQUARE_SIZE wide, with floor: is the floor square
+/// The slide's checkerboard F for squares README_SQUARE_SIZE wide, with floor: is the floor square
 /// under this point an odd one?
-pub fn odd_square(point: Vec3) -> bool {
-    let square = |w: f64| (w / SQUARE_SIZE).floor() as i64;
+pub fn on_an_odd_square(point: Vec3) -> bool {
+    let square = |w: f64| (w / README_SQUARE_SIZE).floor() as i64;
     ((square(point.x) + square(point.z)) & 1) == 1
 }
 
-/// The share of the light a floor point's square shows: ODD_SQUARE on an odd one, else all.
+/// The share of the light a floor point's square shows: README_ODD_SQUARE on an odd one, else all.
 pub fn square_share(point: Vec3) -> f64 {
-    if odd_square(point) { ODD_SQUARE } else { 1.0 }
+    if on_an_odd_square(point) {
+        README_ODD_SQUARE
+    } else {
+        1.0
+    }
 }
 
 /// Does a floor point's green byte show a dark square? Dark is under half of what a lit white even

@@ -133,15 +133,14 @@ impl Primitive {
                 }
                 ahead(-(ray.origin.dot(normal) + offset) / slant)
             }
-            // The slide's test: c = C - O, t = c.D, q = c - tD, p² = q.q, a hit at t - √(r² - p²);
+            // The slide's test: c = C - O, t = c.D, p² = q.q for q = c - tD, a hit at t - √(r² - p²);
             // from inside (the camera may walk in) at t + √(r² - p²), which the slide leaves out.
             Primitive::Sphere { center, radius } => {
                 let c = center - ray.origin;
                 let t = c.dot(ray.direction);
-                let q = c - ray.direction * t;
-                let p2 = q.dot(q);
-                if p2 >= radius * radius {
-                    return None; // touching is a miss too: a ball of radius 0 has no surface
+                let p2 = c.dot(c) - t * t; // q.q by Pythagoras: c is the hypotenuse, t and q the legs
+                if p2 > radius * radius {
+                    return None;
                 }
                 let half_chord = (radius * radius - p2).sqrt();
                 ahead(t - half_chord).or(ahead(t + half_chord))
@@ -165,30 +164,34 @@ struct Scene {
 }
 
 impl Default for Scene {
+    /// The demo: a white checkered floor y = -1 and four balls, one a mirror, under one light.
     fn default() -> Scene {
-        let material = |color, reflectivity, checkered| Material {
-            color,
-            reflectivity,
-            checkered,
-        };
-        let ball = |center, radius, color, reflectivity| {
-            (
-                Primitive::Sphere { center, radius },
-                material(color, reflectivity, false),
-            )
-        };
+        let white = vec3(0.9, 0.9, 0.9);
+        let balls = [
+            // centre, radius, colour, reflectivity
+            (vec3(0.3, 0.0, -4.5), 1.0, white, 0.85), // a mirror
+            (vec3(-2.0, -0.2, -4.2), 0.8, vec3(0.9, 0.2, 0.2), 0.0), // red
+            (vec3(1.9, -0.4, -3.4), 0.6, vec3(0.2, 0.8, 0.3), 0.0), // green
+            (vec3(-0.9, -0.45, -2.6), 0.55, vec3(0.2, 0.4, 0.9), 0.0), // blue
+        ];
         let floor = Primitive::Plane {
             normal: vec3(0.0, 1.0, 0.0),
             offset: 1.0, // p.N + d = y + 1 = 0: the floor is y = -1
         };
-        let white = vec3(0.9, 0.9, 0.9);
-        let objects = vec![
-            (floor, material(white, 0.0, true)), // white, matte (reflectivity 0), checkered
-            ball(vec3(0.3, 0.0, -4.5), 1.0, white, 0.85), // centre, radius 1, white, mirror 0.85
-            ball(vec3(-2.0, -0.2, -4.2), 0.8, vec3(0.9, 0.2, 0.2), 0.0), // radius 0.8, red, matte
-            ball(vec3(1.9, -0.4, -3.4), 0.6, vec3(0.2, 0.8, 0.3), 0.0), // radius 0.6, green, matte
-            ball(vec3(-0.9, -0.45, -2.6), 0.55, vec3(0.2, 0.4, 0.9), 0.0), // radius 0.55, blue
-        ];
+        let checkered_white = Material {
+            color: white,
+            reflectivity: 0.0,
+            checkered: true,
+        };
+        let mut objects = vec![(floor, checkered_white)];
+        for (center, radius, color, reflectivity) in balls {
+            let material = Material {
+                color,
+                reflectivity,
+                checkered: false,
+            };
+            objects.push((Primitive::Sphere { center, radius }, material));
+        }
         Scene {
             objects,
             light: vec3(-3.0, 5.0, 1.0),
@@ -201,7 +204,7 @@ impl Default for Scene {
 // the light) × ODD_SQUARE_BRIGHTNESS on an odd square, mixed by reflectivity with what R sees.
 const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
 const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
-const LIFT: f64 = 1e-6; // a leaving ray starts this far off, times 1 + |P|, as P's rounding grows
+const LIFT: f64 = 1e-4; // a ray leaving a surface starts this far off it
 const ODD_SQUARE_BRIGHTNESS: f64 = 0.25; // odd squares are this bright beside the even ones
 
 struct Hit {
@@ -211,10 +214,10 @@ struct Hit {
 }
 
 impl Hit {
-    /// A ray leaving the hit, lifted along N to miss its own surface, which t > ε can't if grazing.
+    /// A ray leaving the hit, lifted along N: P rounds to a point just under the surface as often
+    /// as over it, and a ray from there would hit the surface it leaves (dark speckles).
     fn outgoing(&self, direction: Vec3, t: f64) -> Ray {
-        let lift = self.normal * (LIFT * (1.0 + self.point.length()));
-        Ray::new(self.point + lift, direction, t)
+        Ray::new(self.point + self.normal * LIFT, direction, t)
     }
     /// The mirror ray of a ray along D: R = D - 2(D.N)N.
     fn mirror_ray(&self, direction: Vec3) -> Ray {
@@ -279,10 +282,10 @@ impl Scene {
 }
 
 /// Step 8, the slide's checkerboard F = ((int)(2 λ1) + (int)λ2) & 1, λ1 = x, λ2 = z: unit squares
-/// (no 2, which would halve them in x); floor for (int), as truncating would merge the squares
-/// either side of 0; and the sum kept in floats, as far out it is past what an integer holds.
+/// (no 2, which would halve them in x), and floor for (int): truncating would round -0.5 and 0.5
+/// both to 0, and the squares either side of x = 0 and of z = 0 would merge into one twice as wide.
 fn odd_square(point: Vec3) -> bool {
-    (point.x.floor() + point.z.floor()).rem_euclid(2.0) == 1.0 // & 1: the sum mod 2
+    (point.x.floor() as i64 + point.z.floor() as i64) & 1 == 1
 }
 
 // Rendering, the slide's step 6: each pixel of the 3D view its primary ray's colour; then the map.

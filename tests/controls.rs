@@ -11,7 +11,7 @@ use std::process::Command;
 
 /// A camera away from the start, turned and tilted, so that each direction is a different one.
 fn somewhere() -> Camera {
-    camera_at(vec3(1.0, 0.5, -2.0), 0.7, -0.4)
+    camera_at(v3(1.0, 0.5, -2.0), 0.7, -0.4)
 }
 
 /// A step of a tenth of a second.
@@ -21,7 +21,7 @@ const DT: f64 = 0.1;
 const ROUNDING: f64 = 1e-9;
 
 /// Are two points the same, give or take rounding?
-fn same(a: Vec3, b: Vec3) -> bool {
+fn same(a: V3, b: V3) -> bool {
     (a - b).length() < ROUNDING
 }
 
@@ -30,10 +30,10 @@ fn w_and_s_move_forward_and_back_along_the_view() {
     let camera = somewhere();
     let (view, ..) = camera_axes(&camera);
     for (keys, sign) in [([Key::W], 1.0), ([Key::S], -1.0)] {
-        let expected = camera.position + view * (sign * README_MOVE_SPEED * DT);
+        let expected = eye(&camera) + view * (sign * README_MOVE_SPEED * DT);
         let after = moved(camera, &keys, DT);
         assert!(
-            same(after.position, expected),
+            same(eye(&after), expected),
             "{keys:?} for {DT} s should move the eye to {expected:?}, not {:?}. {}",
             after.position,
             holds(&[SPEED_FIGURE])
@@ -46,10 +46,10 @@ fn a_and_d_move_left_and_right_level() {
     let camera = somewhere();
     let (_, right, _) = camera_axes(&camera);
     for (keys, sign) in [([Key::D], 1.0), ([Key::A], -1.0)] {
-        let expected = camera.position + right * (sign * README_MOVE_SPEED * DT);
+        let expected = eye(&camera) + right * (sign * README_MOVE_SPEED * DT);
         let after = moved(camera, &keys, DT);
         assert!(
-            same(after.position, expected),
+            same(eye(&after), expected),
             "{keys:?} for {DT} s should move the eye to {expected:?}, not {:?}. {}",
             after.position,
             holds(&[SPEED_FIGURE])
@@ -61,10 +61,10 @@ fn a_and_d_move_left_and_right_level() {
 fn r_and_f_move_straight_up_and_down() {
     let camera = somewhere();
     for (keys, sign) in [([Key::R], 1.0), ([Key::F], -1.0)] {
-        let expected = camera.position + vec3(0.0, sign * README_MOVE_SPEED * DT, 0.0);
+        let expected = eye(&camera) + v3(0.0, sign * README_MOVE_SPEED * DT, 0.0);
         let after = moved(camera, &keys, DT);
         assert!(
-            same(after.position, expected),
+            same(eye(&after), expected),
             "{keys:?} for {DT} s should move the eye to {expected:?}, not {:?}. {}",
             after.position,
             holds(&[SPEED_FIGURE])

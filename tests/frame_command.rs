@@ -8,7 +8,7 @@ mod picture;
 #[path = "support/scenes.rs"]
 mod scenes;
 
-use scenes::camera_at;
+use scenes::{camera_at, v3};
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
@@ -39,7 +39,7 @@ fn temporary(name: &str) -> PathBuf {
 
 #[test]
 fn the_frame_command_writes_the_demos_frame_from_the_pose_given() {
-    let camera = camera_at(vec3(0.5, 0.3, 1.0), 0.6, -0.15);
+    let camera = camera_at(v3(0.5, 0.3, 1.0), 0.6, -0.15);
     let path = temporary("frame.png");
     let file = path.to_str().expect("a temporary path that is text");
     let output = run_frame(&["0.5", "0.3", "1", "0.6", "-0.15", file]);

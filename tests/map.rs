@@ -17,26 +17,26 @@ fn sampled_rays() -> String {
 }
 
 /// The map pixel over a world point's x and z: x to the right, -z up, from MAP_CORNER.
-fn map_pixel(frame: &[u32], point: Vec3) -> u32 {
+fn map_pixel(frame: &[u32], point: V3) -> u32 {
     let column = ((point.x - MAP_CORNER.x) * MAP_SCALE) as usize;
     let row = ((point.z - MAP_CORNER.z) * MAP_SCALE) as usize;
     frame[row * WIDTH + VIEW + column]
 }
 
 /// Is the world point's x and z on the map, at least `margin` units inside its edges?
-fn inside_map(point: Vec3, margin: f64) -> bool {
+fn inside_map(point: V3, margin: f64) -> bool {
     let inside = |w: f64, low: f64| w > low + margin && w < low + MAP_SIDE - margin;
     inside(point.x, MAP_CORNER.x) && inside(point.z, MAP_CORNER.z)
 }
 
 /// The map pixels within `pixels` map pixels of a world point's x and z (those on the map).
-fn map_near(frame: &[u32], point: Vec3, pixels: i32) -> Vec<u32> {
+fn map_near(frame: &[u32], point: V3, pixels: i32) -> Vec<u32> {
     map_around(frame, point, pixels, |_| true)
 }
 
 /// The map pixels exactly `reach` map pixels from a world point's, in x or z: the ring just
 /// outside a square `reach - 1` either side.
-fn ring(frame: &[u32], point: Vec3, reach: i32) -> Vec<u32> {
+fn ring(frame: &[u32], point: V3, reach: i32) -> Vec<u32> {
     map_around(frame, point, reach, |(dx, dz)| {
         dx.abs().max(dz.abs()) == reach
     })
@@ -45,14 +45,14 @@ fn ring(frame: &[u32], point: Vec3, reach: i32) -> Vec<u32> {
 /// The map pixels up to `pixels` either side of a world point's x and z that `keep` keeps.
 fn map_around(
     frame: &[u32],
-    point: Vec3,
+    point: V3,
     pixels: i32,
     keep: impl Fn((i32, i32)) -> bool,
 ) -> Vec<u32> {
     let mut found = Vec::new();
     for dx in -pixels..=pixels {
         for dz in -pixels..=pixels {
-            let near = point + vec3(f64::from(dx), 0.0, f64::from(dz)) * (1.0 / MAP_SCALE);
+            let near = point + v3(f64::from(dx), 0.0, f64::from(dz)) * (1.0 / MAP_SCALE);
             if keep((dx, dz)) && inside_map(near, 0.0) {
                 found.push(map_pixel(frame, near));
             }
@@ -78,7 +78,7 @@ fn named(pixels: &[u32]) -> String {
 }
 
 /// Is a colour drawn within a map pixel of a world point? If not, what is there, by name.
-fn drawn_near(frame: &[u32], point: Vec3, color: u32) -> Result<(), String> {
+fn drawn_near(frame: &[u32], point: V3, color: u32) -> Result<(), String> {
     let near = map_near(frame, point, 1);
     if near.contains(&color) {
         Ok(())
@@ -88,7 +88,7 @@ fn drawn_near(frame: &[u32], point: Vec3, color: u32) -> Result<(), String> {
 }
 
 /// Is a whole square of `color` drawn around a world point, `reach` map pixels either side?
-fn square_at(frame: &[u32], point: Vec3, reach: i32, color: u32) -> Result<(), String> {
+fn square_at(frame: &[u32], point: V3, reach: i32, color: u32) -> Result<(), String> {
     let near = map_near(frame, point, reach);
     if near.iter().all(|&pixel| pixel == color) {
         Ok(())
@@ -99,25 +99,22 @@ fn square_at(frame: &[u32], point: Vec3, reach: i32, color: u32) -> Result<(), S
 
 /// Two poses: the start, and one moved, turned and tilted.
 fn two_poses() -> [Camera; 2] {
-    [
-        Camera::default(),
-        camera_at(vec3(0.5, 0.3, 1.0), 0.6, -0.15),
-    ]
+    [Camera::default(), camera_at(v3(0.5, 0.3, 1.0), 0.6, -0.15)]
 }
 
 #[test]
 fn the_eye_is_a_pink_square_7_map_pixels_wide() {
-    let scene = scene_of(vec![], vec3(0.0, 5.0, 2.0));
+    let scene = scene_of(vec![], v3(0.0, 5.0, 2.0));
     for camera in two_poses() {
         let frame = frame_of(&scene, &camera);
-        if let Err(seen) = square_at(&frame, camera.position, README_MARKER_REACH, CAMERA_COLOR) {
+        if let Err(seen) = square_at(&frame, eye(&camera), README_MARKER_REACH, CAMERA_COLOR) {
             panic!(
                 "{camera:?}: no CAMERA_COLOR square 7 map pixels wide at the eye, {seen}. {}",
                 holds(&[MARKER_FIGURE])
             );
         }
         assert!(
-            !ring(&frame, camera.position, README_MARKER_REACH + 1).contains(&CAMERA_COLOR),
+            !ring(&frame, eye(&camera), README_MARKER_REACH + 1).contains(&CAMERA_COLOR),
             "{camera:?}: the eye's square is wider than 7 map pixels. {}",
             holds(&[MARKER_FIGURE])
         );
@@ -128,11 +125,11 @@ fn the_eye_is_a_pink_square_7_map_pixels_wide() {
 fn the_screens_middle_row_is_a_pink_line_from_c_minus_right_to_c_plus_right() {
     // C = E + dV. The row is drawn 3 map pixels from either end and halfway to it from C, and not
     // 3 map pixels past either end.
-    let scene = scene_of(vec![], vec3(0.0, 5.0, 2.0));
+    let scene = scene_of(vec![], v3(0.0, 5.0, 2.0));
     for camera in two_poses() {
         let frame = frame_of(&scene, &camera);
         let (view, right, _) = camera_axes(&camera);
-        let middle = camera.position + view * README_SCREEN_DISTANCE;
+        let middle = eye(&camera) + view * README_SCREEN_DISTANCE;
         let near_end = 1.0 - 3.0 / MAP_SCALE;
         for along in [-near_end, -0.5, 0.5, near_end] {
             let on_row = middle + right * along;
@@ -157,7 +154,7 @@ fn the_screens_middle_row_is_a_pink_line_from_c_minus_right_to_c_plus_right() {
 
 #[test]
 fn the_light_is_an_orange_square_7_map_pixels_wide() {
-    let light = vec3(-2.0, 5.0, 2.0);
+    let light = v3(-2.0, 5.0, 2.0);
     let frame = frame_of(&scene_of(vec![], light), &Camera::default());
     if let Err(seen) = square_at(&frame, light, README_MARKER_REACH, LIGHT_COLOR) {
         panic!(
@@ -184,29 +181,29 @@ fn off_the_map_the_eye_and_the_light_stand_whole_on_the_nearest_edge() {
     let cases = [
         (
             "behind the map",
-            vec3(0.0, 0.0, 25.0),
+            v3(0.0, 0.0, 25.0),
             (column(0.0), last - reach),
         ),
         (
             "right of the map",
-            vec3(20.0, 0.0, -4.0),
+            v3(20.0, 0.0, -4.0),
             (last - reach, row(-4.0)),
         ),
         (
             "past its bottom left corner",
-            vec3(-30.0, 0.0, 40.0),
+            v3(-30.0, 0.0, 40.0),
             (reach, last - reach),
         ),
         (
             "past its top right corner",
-            vec3(30.0, 0.0, -40.0),
+            v3(30.0, 0.0, -40.0),
             (last - reach, reach),
         ),
     ];
     for (place, point, (middle_x, middle_y)) in cases {
         let light_only = frame_of(&scene_of(vec![], point), &Camera::default());
         let eye_there = camera_at(point, 0.0, 0.0);
-        let eye_only = frame_of(&scene_of(vec![], vec3(0.0, 5.0, -3.0)), &eye_there);
+        let eye_only = frame_of(&scene_of(vec![], v3(0.0, 5.0, -3.0)), &eye_there);
         let markers = [
             ("eye", &eye_only, CAMERA_COLOR),
             ("light", &light_only, LIGHT_COLOR),
@@ -233,15 +230,15 @@ fn off_the_map_the_eye_and_the_light_stand_whole_on_the_nearest_edge() {
 fn a_sphere_cut_by_the_level_slice_is_outlined_in_its_colour() {
     // Its centre 0.5 below the eye: the plane y = 0 cuts it in a circle of radius √0.75. The
     // far side of that circle, which no sampled ray reaches, shows the ball's colour.
-    let center = vec3(2.0, -0.5, -5.0);
+    let center = v3(2.0, -0.5, -5.0);
     let scene = scene_of(
         vec![sphere(center, 1.0, matte(PURE_RED))],
-        vec3(0.0, 5.0, 2.0),
+        v3(0.0, 5.0, 2.0),
     );
     let frame = frame_of(&scene, &Camera::default());
     let circle = 0.75f64.sqrt();
     for angle in [1.2f64, 1.6, 2.0] {
-        let on_circle = vec3(
+        let on_circle = v3(
             center.x + circle * angle.cos(),
             0.0,
             center.z - circle * angle.sin(),
@@ -255,9 +252,9 @@ fn a_sphere_cut_by_the_level_slice_is_outlined_in_its_colour() {
 #[test]
 fn a_tilted_slice_outlines_the_spheres_it_cuts_and_no_others() {
     for (yaw, pitch) in [(0.0, 0.25), (0.0, -0.25), (0.6, 0.3), (-0.9, -0.35)] {
-        let camera = camera_at(vec3(0.5, 0.3, 1.0), yaw, pitch);
+        let camera = camera_at(v3(0.5, 0.3, 1.0), yaw, pitch);
         let (view, right, up) = camera_axes(&camera);
-        let eye = camera.position;
+        let eye = eye(&camera);
         // Cut: its centre `height` off the tilted plane, which cuts it in a circle of radius
         // √(1 - height²) around the centre's foot on the plane.
         let height = 0.4;
@@ -266,7 +263,7 @@ fn a_tilted_slice_outlines_the_spheres_it_cuts_and_no_others() {
         let circle = (1.0 - height * height).sqrt();
         // Missed: at the eye's height, where a level plane would cut it, but 5 |sin pitch| >= 1.2
         // from the tilted plane, further than its radius 0.8.
-        let level_view = vec3(-yaw.sin(), 0.0, -yaw.cos());
+        let level_view = v3(-yaw.sin(), 0.0, -yaw.cos());
         let missed_center = eye + level_view * 5.0 - right * 2.5;
         let scene = scene_of(
             vec![
@@ -295,18 +292,15 @@ fn a_tilted_slice_outlines_the_spheres_it_cuts_and_no_others() {
 
 #[test]
 fn each_sampled_ray_that_hits_a_sphere_ends_there_with_a_dot() {
-    for camera in [Camera::default(), camera_at(vec3(0.5, 0.3, 1.0), 0.6, -0.3)] {
+    for camera in [Camera::default(), camera_at(v3(0.5, 0.3, 1.0), 0.6, -0.3)] {
         let (view, right, up) = camera_axes(&camera);
         // A ball ahead, its centre 0.3 off the slice's plane: about a fifth of the rays hit it.
-        let center = camera.position + view * 4.5 + right * 0.8 + up * 0.3;
+        let center = eye(&camera) + view * 4.5 + right * 0.8 + up * 0.3;
         let radius = 1.0;
-        let scene = scene_of(
-            vec![sphere(center, radius, matte(RED))],
-            vec3(0.0, 50.0, 0.0),
-        );
+        let scene = scene_of(vec![sphere(center, radius, matte(RED))], v3(0.0, 50.0, 0.0));
         let frame = frame_of(&scene, &camera);
         for direction in sampled_directions(&camera) {
-            let Some(hit) = ray_sphere(camera.position, direction, center, radius) else {
+            let Some(hit) = ray_sphere(eye(&camera), direction, center, radius) else {
                 continue;
             };
             if let Err(seen) = square_at(&frame, hit, 1, RAY_COLOR) {
@@ -340,7 +334,7 @@ fn each_sampled_ray_that_hits_a_sphere_ends_there_with_a_dot() {
 
 #[test]
 fn a_sampled_ray_that_hits_nothing_runs_on_in_sky_blue() {
-    let frame = frame_of(&scene_of(vec![], vec3(0.0, 5.0, 2.0)), &Camera::default());
+    let frame = frame_of(&scene_of(vec![], v3(0.0, 5.0, 2.0)), &Camera::default());
     // The middle row's first ray leaves along about (-1, 0, -1).
     let direction = sampled_directions(&Camera::default())[0].normalize();
     for t in [2.0, 4.0, 6.0, 8.0] {
@@ -360,7 +354,7 @@ fn every_tenth_ray_is_drawn_and_none_between() {
     // With nothing in the scene, each sampled ray is drawn, and halfway between two neighbours
     // (10 columns apart) the map is empty. At t = 6 they are 4.7 to 9.4 map pixels apart.
     let camera = Camera::default();
-    let frame = frame_of(&scene_of(vec![], vec3(0.0, 5.0, 2.0)), &camera);
+    let frame = frame_of(&scene_of(vec![], v3(0.0, 5.0, 2.0)), &camera);
     let t = 6.0;
     for pair in sampled_directions(&camera).windows(2) {
         let left = pair[0].normalize();
@@ -389,10 +383,10 @@ fn every_tenth_ray_is_drawn_and_none_between() {
 }
 
 /// The leftmost point where a sampled ray hits the sphere, by the test's geometry.
-fn leftmost_hit(camera: &Camera, center: Vec3, radius: f64) -> Vec3 {
+fn leftmost_hit(camera: &Camera, center: V3, radius: f64) -> V3 {
     sampled_directions(camera)
         .into_iter()
-        .filter_map(|d| ray_sphere(camera.position, d, center, radius))
+        .filter_map(|d| ray_sphere(eye(&camera), d, center, radius))
         .min_by(|a, b| a.x.total_cmp(&b.x))
         .expect("the test's set-up: a sampled ray hits the sphere")
 }
@@ -402,9 +396,9 @@ fn a_shadow_ray_runs_from_a_hit_to_the_light_and_stops_there() {
     // A ball ahead, the light to its left: the leftmost sampled hit's shadow ray runs to the
     // light, drawn in SHADOW_COLOR half way, and not on past the light.
     let camera = Camera::default();
-    let center = vec3(1.5, 0.0, -6.0);
+    let center = v3(1.5, 0.0, -6.0);
     let radius = 1.0;
-    let light = vec3(-3.0, 0.0, -3.0);
+    let light = v3(-3.0, 0.0, -3.0);
     let frame = frame_of(
         &scene_of(vec![sphere(center, radius, matte(RED))], light),
         &camera,
@@ -428,9 +422,9 @@ fn a_shadow_ray_runs_from_a_hit_to_the_light_and_stops_there() {
 #[test]
 fn a_blocked_shadow_ray_ends_at_what_blocks_it() {
     let camera = Camera::default();
-    let target = vec3(1.5, 0.0, -6.0);
+    let target = v3(1.5, 0.0, -6.0);
     let radius = 1.0;
-    let light = vec3(-3.0, 0.0, -3.0);
+    let light = v3(-3.0, 0.0, -3.0);
     let hit = leftmost_hit(&camera, target, radius);
     let to_light = (light - hit).normalize();
     // A small ball half way along the shadow ray blocks it.
@@ -463,19 +457,19 @@ fn a_mirror_ray_leaves_each_sampled_hit_on_a_mirror_along_r() {
     // sampled ray is drawn over (they are drawn on top: a ray that hits the ball head on comes
     // back along itself).
     let camera = Camera::default();
-    let center = vec3(0.5, 0.0, -5.0);
+    let center = v3(0.5, 0.0, -5.0);
     let scene = scene_of(
         vec![sphere(center, 1.0, mirror(WHITE, 0.9))],
-        center + vec3(0.0, 20.0, 0.0),
+        center + v3(0.0, 20.0, 0.0),
     );
     let frame = frame_of(&scene, &camera);
-    let sampled: Vec<(Vec3, Option<Vec3>)> = sampled_directions(&camera)
+    let sampled: Vec<(V3, Option<V3>)> = sampled_directions(&camera)
         .into_iter()
-        .map(|d| (d.normalize(), ray_sphere(camera.position, d, center, 1.0)))
+        .map(|d| (d.normalize(), ray_sphere(eye(&camera), d, center, 1.0)))
         .collect();
     // Is a point within 2 map pixels of a sampled ray, from t = d (at or before the screen) to its
     // hit?
-    let under_a_sampled_ray = |point: Vec3| {
+    let under_a_sampled_ray = |point: V3| {
         sampled.iter().any(|&(d, hit)| {
             let end = hit.map_or(f64::INFINITY, |hit| hit.length());
             let t = point.dot(d).clamp(README_SCREEN_DISTANCE, end);
@@ -505,8 +499,8 @@ fn a_mirror_ray_leaves_each_sampled_hit_on_a_mirror_along_r() {
 #[test]
 fn no_mirror_ray_leaves_a_matte_ball() {
     let scene = scene_of(
-        vec![sphere(vec3(0.5, 0.0, -5.0), 1.0, matte(RED))],
-        vec3(0.0, 20.0, 0.0),
+        vec![sphere(v3(0.5, 0.0, -5.0), 1.0, matte(RED))],
+        v3(0.0, 20.0, 0.0),
     );
     let frame = frame_of(&scene, &Camera::default());
     assert!(
@@ -519,7 +513,7 @@ fn no_mirror_ray_leaves_a_matte_ball() {
 fn the_sampled_rays_start_at_the_screen() {
     // Between the eye's marker and the screen no sampled ray is drawn, so that both stand clear;
     // just past the screen each is.
-    let scene = scene_of(vec![], vec3(0.0, 5.0, 2.0));
+    let scene = scene_of(vec![], v3(0.0, 5.0, 2.0));
     for camera in two_poses() {
         let frame = frame_of(&scene, &camera);
         let (view, ..) = camera_axes(&camera);
@@ -527,7 +521,7 @@ fn the_sampled_rays_start_at_the_screen() {
             let unit = direction.normalize();
             let screen = README_SCREEN_DISTANCE / unit.dot(view); // where it meets the screen: t = d / D.V
             let pixel = 1.0 / (unit.x.hypot(unit.z) * MAP_SCALE); // t for a map pixel along it
-            let at = |t: f64| camera.position + unit * t;
+            let at = |t: f64| eye(&camera) + unit * t;
             // From past the eye's marker to 6 map pixels before the screen's row (the rays beside
             // it cross the row at 45 degrees at most), every quarter map pixel.
             let mut t = 4.0 * pixel;
@@ -562,12 +556,12 @@ fn the_sampled_rays_are_drawn_over_the_shadow_and_mirror_rays() {
     const LEAST_ON_RAY: f64 = 0.75;
     let camera = Camera::default();
     let balls = [
-        (vec3(0.3, 0.0, -4.5), 1.0, mirror(WHITE, 0.85)),
-        (vec3(-2.0, -0.2, -4.2), 0.8, matte(RED)),
-        (vec3(1.9, -0.4, -3.4), 0.6, matte(PURE_GREEN)),
+        (v3(0.3, 0.0, -4.5), 1.0, mirror(WHITE, 0.85)),
+        (v3(-2.0, -0.2, -4.2), 0.8, matte(RED)),
+        (v3(1.9, -0.4, -3.4), 0.6, matte(PURE_GREEN)),
     ];
     let objects = balls.iter().map(|&(c, r, m)| sphere(c, r, m)).collect();
-    let frame = frame_of(&scene_of(objects, vec3(-3.0, 5.0, 1.0)), &camera);
+    let frame = frame_of(&scene_of(objects, v3(-3.0, 5.0, 1.0)), &camera);
     let mut on_ray = 0;
     let mut covered = 0;
     let mut checked = 0;
@@ -575,7 +569,7 @@ fn the_sampled_rays_are_drawn_over_the_shadow_and_mirror_rays() {
         let d = direction.normalize();
         let hit = balls
             .iter()
-            .filter_map(|&(center, radius, _)| ray_sphere(camera.position, d, center, radius))
+            .filter_map(|&(center, radius, _)| ray_sphere(eye(&camera), d, center, radius))
             .map(|point| point.length())
             .min_by(f64::total_cmp);
         let color = if hit.is_some() { RAY_COLOR } else { MISS_COLOR };
@@ -610,13 +604,13 @@ fn with_a_level_camera_the_slice_never_meets_the_floor() {
     // (compares) The rays of a level camera's middle row are level: they never meet a floor
     // below the eye, so a floor changes nothing on the map. Poses around the demo, the last one
     // where rounding once tilted the row into the floor 10^16 units away.
-    let light = vec3(0.0, 5.0, 0.0);
+    let light = v3(0.0, 5.0, 0.0);
     for (position, yaw) in [
-        (vec3(0.0, 0.0, 0.0), 0.0),
-        (vec3(0.7, 0.3, -1.0), 0.4),
-        (vec3(-1.0, 2.5, 1.0), -2.0),
-        (vec3(2.0, 0.1, 2.0), 4.0),
-        (vec3(-1.9, 0.18, 0.07), 0.03),
+        (v3(0.0, 0.0, 0.0), 0.0),
+        (v3(0.7, 0.3, -1.0), 0.4),
+        (v3(-1.0, 2.5, 1.0), -2.0),
+        (v3(2.0, 0.1, 2.0), 4.0),
+        (v3(-1.9, 0.18, 0.07), 0.03),
     ] {
         let camera = camera_at(position, yaw, 0.0);
         let empty = frame_of(&scene_of(vec![], light), &camera);
@@ -638,26 +632,26 @@ fn from_far_off_the_map_the_sampled_rays_still_cross_it() {
     // it.)
     const INSET: f64 = 16.0 / MAP_SCALE; // 16 map pixels
     const BEFORE: f64 = 0.3;
-    let center = vec3(0.0, 0.0, -5.0);
+    let center = v3(0.0, 0.0, -5.0);
     let radius = 3.0;
     let scene = scene_of(
         vec![sphere(center, radius, matte(RED))],
-        vec3(0.0, 20.0, -5.0),
+        v3(0.0, 20.0, -5.0),
     );
     let bottom = MAP_CORNER.z + MAP_SIDE - INSET;
     let top = MAP_CORNER.z + INSET;
     let within_width =
-        |point: Vec3| point.x > MAP_CORNER.x + INSET && point.x < MAP_CORNER.x + MAP_SIDE - INSET;
+        |point: V3| point.x > MAP_CORNER.x + INSET && point.x < MAP_CORNER.x + MAP_SIDE - INSET;
     for distance in [20.0, 30.0, 40.0] {
-        let camera = camera_at(vec3(0.0, 0.0, distance), 0.0, 0.0);
+        let camera = camera_at(v3(0.0, 0.0, distance), 0.0, 0.0);
         let frame = frame_of(&scene, &camera);
         for direction in sampled_directions(&camera) {
             let d = direction.normalize();
-            let at_z = |z: f64| camera.position + d * ((z - distance) / d.z);
+            let at_z = |z: f64| eye(&camera) + d * ((z - distance) / d.z);
             if !within_width(at_z(bottom)) {
                 continue; // it passes beside the map
             }
-            let (color, end) = match ray_sphere(camera.position, direction, center, radius) {
+            let (color, end) = match ray_sphere(eye(&camera), direction, center, radius) {
                 Some(hit) => (RAY_COLOR, hit.z + BEFORE),
                 None if within_width(at_z(top)) => (MISS_COLOR, top),
                 None => continue, // it leaves the map by a side
@@ -680,20 +674,20 @@ fn every_point_of_a_huge_spheres_circle_has_its_outline_within_a_pixel() {
     // A ball of radius 35 cut through its centre, the eye looking away from it, the light off
     // the map: every point of the circle 0.1 units or more inside the map has the outline within
     // a map pixel of it.
-    let center = vec3(0.0, 0.0, -40.0);
+    let center = v3(0.0, 0.0, -40.0);
     let radius = 35.0;
     let scene = scene_of(
         vec![sphere(center, radius, matte(PURE_RED))],
-        vec3(0.0, 100.0, 100.0),
+        v3(0.0, 100.0, 100.0),
     );
     let frame = frame_of(
         &scene,
-        &camera_at(vec3(0.0, 0.0, 0.0), std::f64::consts::PI, 0.0),
+        &camera_at(v3(0.0, 0.0, 0.0), std::f64::consts::PI, 0.0),
     );
     let points = 20_000; // every 0.011 units along the circle
     for i in 0..points {
         let angle = std::f64::consts::TAU * f64::from(i) / f64::from(points);
-        let on_circle = center + vec3(angle.cos(), 0.0, angle.sin()) * radius;
+        let on_circle = center + v3(angle.cos(), 0.0, angle.sin()) * radius;
         if !inside_map(on_circle, 0.1) {
             continue;
         }

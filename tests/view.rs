@@ -27,12 +27,12 @@ const SHADING_SLACK: u32 = 1;
 
 #[test]
 fn pixels_that_hit_nothing_show_the_sky() {
-    let ball = vec3(0.0, 0.0, -4.0);
-    let scene = scene_of(vec![sphere(ball, 1.0, matte(RED))], vec3(0.0, 5.0, 0.0));
+    let ball = v3(0.0, 0.0, -4.0);
+    let scene = scene_of(vec![sphere(ball, 1.0, matte(RED))], v3(0.0, 5.0, 0.0));
     let camera = Camera::default();
     let frame = frame_of(&scene, &camera);
     let last = VIEW - 1;
-    let above_the_ball = project(&camera, ball + vec3(0.0, 2.0, 0.0));
+    let above_the_ball = project(&camera, ball + v3(0.0, 2.0, 0.0));
     for pixel in [(0, 0), (last, 0), (0, last), (last, last), above_the_ball] {
         let seen = rgb(&frame, pixel);
         assert!(
@@ -45,12 +45,9 @@ fn pixels_that_hit_nothing_show_the_sky() {
 
 #[test]
 fn a_sphere_covers_its_projected_centre_and_ends_at_its_silhouette() {
-    let center = vec3(1.0, 0.5, -5.0);
+    let center = v3(1.0, 0.5, -5.0);
     let radius = 1.0;
-    let scene = scene_of(
-        vec![sphere(center, radius, matte(RED))],
-        vec3(0.0, 0.0, 0.0),
-    );
+    let scene = scene_of(vec![sphere(center, radius, matte(RED))], v3(0.0, 0.0, 0.0));
     let camera = Camera::default();
     let frame = frame_of(&scene, &camera);
     let middle = rgb(&frame, project(&camera, center));
@@ -65,7 +62,7 @@ fn a_sphere_covers_its_projected_centre_and_ends_at_its_silhouette() {
     let distance = center.length();
     let silhouette = (radius / distance).asin();
     let toward = center.normalize();
-    let beside = vec3(toward.z, 0.0, -toward.x).normalize(); // level, at right angles to `toward`
+    let beside = v3(toward.z, 0.0, -toward.x).normalize(); // level, at right angles to `toward`
     let at = |angle: f64| {
         project(
             &camera,
@@ -90,13 +87,13 @@ fn a_sphere_covers_its_projected_centre_and_ends_at_its_silhouette() {
 fn the_nearest_of_two_spheres_in_line_hides_the_other() {
     // A red sphere in front of a green one, listed first and then last: the nearer wins whatever
     // the list's order.
-    let near = || sphere(vec3(0.0, 0.0, -3.0), 0.5, matte(RED));
-    let far = || sphere(vec3(0.0, 0.0, -6.0), 1.5, matte(PURE_GREEN));
+    let near = || sphere(v3(0.0, 0.0, -3.0), 0.5, matte(RED));
+    let far = || sphere(v3(0.0, 0.0, -6.0), 1.5, matte(PURE_GREEN));
     for (order, objects) in [
         ("first", vec![near(), far()]),
         ("last", vec![far(), near()]),
     ] {
-        let frame = frame_of(&scene_of(objects, vec3(0.0, 0.0, 0.0)), &Camera::default());
+        let frame = frame_of(&scene_of(objects, v3(0.0, 0.0, 0.0)), &Camera::default());
         let middle = rgb(&frame, (VIEW / 2, VIEW / 2));
         assert!(
             is_red(middle),
@@ -107,8 +104,8 @@ fn the_nearest_of_two_spheres_in_line_hides_the_other() {
 
 #[test]
 fn a_sphere_is_shaded_ambient_plus_n_dot_l() {
-    let center = vec3(0.0, 0.0, -4.0);
-    let light = vec3(-10.0, 0.0, -4.0);
+    let center = v3(0.0, 0.0, -4.0);
+    let light = v3(-10.0, 0.0, -4.0);
     let scene = scene_of(vec![sphere(center, 1.0, matte(RED))], light);
     let camera = Camera::default();
     let frame = frame_of(&scene, &camera);
@@ -116,16 +113,16 @@ fn a_sphere_is_shaded_ambient_plus_n_dot_l() {
     for (side, normal) in [
         (
             "the side facing the light",
-            vec3(-FRAC_1_SQRT_2, 0.0, FRAC_1_SQRT_2),
+            v3(-FRAC_1_SQRT_2, 0.0, FRAC_1_SQRT_2),
         ),
         (
             "the side facing away",
-            vec3(FRAC_1_SQRT_2, 0.0, FRAC_1_SQRT_2),
+            v3(FRAC_1_SQRT_2, 0.0, FRAC_1_SQRT_2),
         ),
     ] {
         let pixel = project(&camera, center + normal);
         let direction = pixel_direction(&camera, pixel);
-        let point = ray_sphere(camera.position, direction, center, 1.0).expect("a ray to the ball");
+        let point = ray_sphere(eye(&camera), direction, center, 1.0).expect("a ray to the ball");
         let red = rgb(&frame, pixel)[0];
         let expected = byte(RED.x * lit_share(point, point - center, light));
         assert!(
@@ -138,19 +135,19 @@ fn a_sphere_is_shaded_ambient_plus_n_dot_l() {
 
 #[test]
 fn a_sphere_between_the_floor_and_the_light_casts_a_shadow() {
-    let center = vec3(0.0, 0.0, -5.0);
-    let light = vec3(0.0, 3.0, -5.0);
+    let center = v3(0.0, 0.0, -5.0);
+    let light = v3(0.0, 3.0, -5.0);
     let scene = scene_of(
         vec![checkered_floor(), sphere(center, 1.0, matte(RED))],
         light,
     );
-    let camera = camera_at(vec3(0.0, 1.0, 0.0), 0.0, -0.3);
+    let camera = camera_at(v3(0.0, 1.0, 0.0), 0.0, -0.3);
     let frame = frame_of(&scene, &camera);
     // Two floor points in view: the segment from the first to the light passes the sphere's
     // centre 0.69 away, inside it; the second's passes 1.65 away. Each shows its square's share.
-    let shaded = project(&camera, vec3(-0.5, FLOOR_Y, -4.2));
-    let lit = project(&camera, vec3(-2.5, FLOOR_Y, -4.2));
-    let up = vec3(0.0, 1.0, 0.0);
+    let shaded = project(&camera, v3(-0.5, FLOOR_Y, -4.2));
+    let lit = project(&camera, v3(-2.5, FLOOR_Y, -4.2));
+    let up = v3(0.0, 1.0, 0.0);
     for (what, pixel, light_share) in [
         ("in the shadow, ambient only", shaded, README_AMBIENT),
         (
@@ -178,16 +175,16 @@ fn a_sphere_between_the_floor_and_the_light_casts_a_shadow() {
 fn only_what_lies_between_a_point_and_the_light_shades_it() {
     // (compares) A floor point with two balls that do not lie between it and the light, one
     // beyond the light and one beside it, is as bright as with no balls at all.
-    let light = vec3(0.0, 2.0, -4.0);
-    let beyond = sphere(vec3(0.0, 4.0, -4.0), 1.0, matte(RED));
-    let beside = sphere(vec3(4.0, 0.0, -8.0), 1.0, matte(RED));
-    let camera = camera_at(vec3(0.0, 1.0, 0.0), 0.0, -0.3);
+    let light = v3(0.0, 2.0, -4.0);
+    let beyond = sphere(v3(0.0, 4.0, -4.0), 1.0, matte(RED));
+    let beside = sphere(v3(4.0, 0.0, -8.0), 1.0, matte(RED));
+    let camera = camera_at(v3(0.0, 1.0, 0.0), 0.0, -0.3);
     let alone = frame_of(&scene_of(vec![checkered_floor()], light), &camera);
     let with_balls = frame_of(
         &scene_of(vec![checkered_floor(), beyond, beside], light),
         &camera,
     );
-    let pixel = project(&camera, vec3(0.5, FLOOR_Y, -3.5));
+    let pixel = project(&camera, v3(0.5, FLOOR_Y, -3.5));
     let seen = rgb(&with_balls, pixel);
     let expected = rgb(&alone, pixel);
     assert!(
@@ -198,12 +195,12 @@ fn only_what_lies_between_a_point_and_the_light_shades_it() {
 
 /// A light high above the floor: the squares the floor tests look at, x and z from -2 to 2, get
 /// nearly all of it (N.L over 0.999 there).
-const HIGH_LIGHT: Vec3 = vec3(0.0, 100.0, 0.0);
+const HIGH_LIGHT: V3 = v3(0.0, 100.0, 0.0);
 
 /// The checkered floor alone under HIGH_LIGHT, seen from 2 units above it, looking down: the
 /// camera and its frame.
 fn floor_from_above() -> (Camera, Vec<u32>) {
-    let camera = camera_at(vec3(0.0, 1.0, 3.0), 0.0, -0.5);
+    let camera = camera_at(v3(0.0, 1.0, 3.0), 0.0, -0.5);
     let frame = frame_of(&scene_of(vec![checkered_floor()], HIGH_LIGHT), &camera);
     (camera, frame)
 }
@@ -214,7 +211,7 @@ fn the_floor_is_checkered_by_floor_x_plus_floor_z() {
     // Square centres on both sides of x = 0 and of z = 0.
     for x in [-1.5, -0.5, 0.5, 1.5] {
         for z in [-1.5, -0.5, 0.5, 1.5] {
-            let point = vec3(x, FLOOR_Y, z);
+            let point = v3(x, FLOOR_Y, z);
             let green = rgb(&frame, project(&camera, point))[1];
             let odd = on_an_odd_square(point);
             assert!(
@@ -234,9 +231,9 @@ fn the_floors_odd_squares_show_a_quarter_of_the_light() {
     // Lit from high above, each point shows the lit share of white, on an odd square a quarter
     // of it: README_ODD_SQUARE, the README's figure.
     let (camera, frame) = floor_from_above();
-    let up = vec3(0.0, 1.0, 0.0);
+    let up = v3(0.0, 1.0, 0.0);
     for x in [-0.5, 0.5] {
-        let pixel = project(&camera, vec3(x, FLOOR_Y, -0.5));
+        let pixel = project(&camera, v3(x, FLOOR_Y, -0.5));
         let point = floor_seen(&camera, pixel);
         let odd = on_an_odd_square(point);
         let green = rgb(&frame, pixel)[1];
@@ -262,7 +259,7 @@ const EDGE_BAND: f64 = 0.05;
 
 /// Where the unit sphere at `center` sends the ray of the default camera's pixel (x, y) when its
 /// eye is at `eye`, by the test's own geometry: the hit and R = D - 2(D.N)N, if it hits.
-fn reflected_ray(eye: Vec3, center: Vec3, (x, y): (usize, usize)) -> Option<(Vec3, Vec3)> {
+fn reflected_ray(eye: V3, center: V3, (x, y): (usize, usize)) -> Option<(V3, V3)> {
     let d = pixel_direction(&Camera::default(), (x, y)).normalize();
     let point = ray_sphere(eye, d, center, 1.0)?;
     let n = point - center;
@@ -270,7 +267,7 @@ fn reflected_ray(eye: Vec3, center: Vec3, (x, y): (usize, usize)) -> Option<(Vec
 }
 
 /// Does the segment from a to b pass through the sphere?
-fn segment_hits_sphere(a: Vec3, b: Vec3, center: Vec3, radius: f64) -> bool {
+fn segment_hits_sphere(a: V3, b: V3, center: V3, radius: f64) -> bool {
     let ab = b - a;
     let t = ((center - a).dot(ab) / ab.dot(ab)).clamp(0.0, 1.0);
     let closest = a + ab * t - center;
@@ -279,8 +276,8 @@ fn segment_hits_sphere(a: Vec3, b: Vec3, center: Vec3, radius: f64) -> bool {
 
 #[test]
 fn a_mirror_ball_reflects_the_checkered_floor_and_the_sky() {
-    let center = vec3(0.0, 0.0, -4.0);
-    let light = vec3(0.0, 20.0, 20.0);
+    let center = v3(0.0, 0.0, -4.0);
+    let light = v3(0.0, 20.0, 20.0);
     let perfect_mirror = mirror(WHITE, 1.0);
     let scene = scene_of(
         vec![checkered_floor(), sphere(center, 1.0, perfect_mirror)],
@@ -297,7 +294,7 @@ fn a_mirror_ball_reflects_the_checkered_floor_and_the_sky() {
     };
     for y in (0..VIEW).step_by(EVERY) {
         for x in (0..VIEW).step_by(EVERY) {
-            let Some((point, direction)) = reflected_ray(camera.position, center, (x, y)) else {
+            let Some((point, direction)) = reflected_ray(eye(&camera), center, (x, y)) else {
                 continue;
             };
             let seen = rgb(&frame, (x, y));
@@ -336,17 +333,17 @@ fn a_part_mirror_mixes_its_own_colour_with_what_its_mirror_ray_sees() {
     // shows three quarters of the wall's own lit colour and a quarter of what its mirror ray sees
     // going straight back past the eye: the sky.
     let reflectivity = 0.25;
-    let grey = vec3(0.6, 0.6, 0.6);
-    let facing_the_eye = vec3(0.0, 0.0, 1.0);
+    let grey = v3(0.6, 0.6, 0.6);
+    let facing_the_eye = v3(0.0, 0.0, 1.0);
     let wall = Primitive::Plane {
-        normal: facing_the_eye,
+        normal: facing_the_eye.into(),
         offset: 5.0, // p.N + d = z + 5 = 0
     };
     let camera = Camera::default();
-    let scene = scene_of(vec![(wall, mirror(grey, reflectivity))], camera.position);
+    let scene = scene_of(vec![(wall, mirror(grey, reflectivity))], eye(&camera));
     let frame = frame_of(&scene, &camera);
     // The middle pixel's centre sees the wall 0.014 off (0, 0, -5), where N.L is 4 x 10^-6 less.
-    let lit = lit_share(vec3(0.0, 0.0, -5.0), facing_the_eye, camera.position);
+    let lit = lit_share(v3(0.0, 0.0, -5.0), facing_the_eye, eye(&camera));
     let expected = bytes(grey * (lit * (1.0 - reflectivity)) + SKY * reflectivity);
     let shown = rgb(&frame, (VIEW / 2, VIEW / 2));
     for (channel, name) in ["red", "green", "blue"].iter().enumerate() {
@@ -368,14 +365,14 @@ fn facing_mirrors_stop_after_the_readmes_five_bounces() {
     // recursion stops, lit as that point is lit: bounce 0 is the floor, so after an odd number of
     // bounces it ends on the ceiling and after an even one on the floor.
     const CEILING_Y: f64 = 1.0;
-    let up = vec3(0.0, 1.0, 0.0);
-    let down = vec3(0.0, -1.0, 0.0);
+    let up = v3(0.0, 1.0, 0.0);
+    let down = v3(0.0, -1.0, 0.0);
     let floor = Primitive::Plane {
-        normal: up,
+        normal: up.into(),
         offset: -FLOOR_Y, // y + 1 = 0
     };
     let ceiling = Primitive::Plane {
-        normal: down,
+        normal: down.into(),
         offset: CEILING_Y, // -y + 1 = 0
     };
     let scene = scene_of(
@@ -383,13 +380,13 @@ fn facing_mirrors_stop_after_the_readmes_five_bounces() {
             (floor, mirror(PURE_RED, 1.0)),
             (ceiling, mirror(PURE_BLUE, 1.0)),
         ],
-        vec3(0.0, 0.0, -3.0),
+        v3(0.0, 0.0, -3.0),
     );
     // Steeply down: bounce k is at z = -0.1 - 0.2k, on the ceiling for odd k. Each starts 10^-6
     // or so off its mirror, which moves the last point by about 10^-6 in all; stopping a bounce
     // early or late changes the brightness by 0.06 or more.
     const BOUNCE_SLACK: f64 = 1e-5;
-    let ray = Ray::new(vec3(0.0, 0.0, 0.0), vec3(0.0, -1.0, -0.1), f64::INFINITY);
+    let ray = ray_from(v3(0.0, 0.0, 0.0), v3(0.0, -1.0, -0.1), f64::INFINITY);
     let color = scene.trace(ray, 0);
     // Bounce k's mirror, its point, and how brightly that point is lit.
     let bounce = |k: u32| {
@@ -399,8 +396,8 @@ fn facing_mirrors_stop_after_the_readmes_five_bounces() {
         } else {
             ("the red floor", FLOOR_Y, up)
         };
-        let point = vec3(0.0, height, -0.1 - 0.2 * f64::from(k));
-        (mirror, point, lit_share(point, normal, scene.light))
+        let point = v3(0.0, height, -0.1 - 0.2 * f64::from(k));
+        (mirror, point, lit_share(point, normal, scene.light.into()))
     };
     let (last_mirror, last_point, expected) = bounce(README_BOUNCES);
     // Which mirror the colour comes from: only the floor's red, or only the ceiling's blue.
@@ -449,11 +446,11 @@ fn facing_mirrors_stop_after_the_readmes_five_bounces() {
 fn a_colour_brighter_than_white_shows_as_255() {
     // A matte ball of colour (0, 0.3, 2) seen head on, lit from the eye: its blue, about 2 at the
     // middle, shows as 255; unclamped, about 510 would carry into green's byte.
-    let glowing = vec3(0.0, 0.3, 2.0);
+    let glowing = v3(0.0, 0.3, 2.0);
     let camera = Camera::default();
     let scene = scene_of(
-        vec![sphere(vec3(0.0, 0.0, -4.0), 1.0, matte(glowing))],
-        camera.position,
+        vec![sphere(v3(0.0, 0.0, -4.0), 1.0, matte(glowing))],
+        eye(&camera),
     );
     let frame = frame_of(&scene, &camera);
     let [red, green, blue] = rgb(&frame, (VIEW / 2, VIEW / 2));
@@ -469,15 +466,15 @@ fn a_colour_brighter_than_white_shows_as_255() {
 // The camera: turned, tilted, moved, and in odd places.
 
 /// A red ball and a scene lit from high up, for the camera tests.
-fn ball_scene(center: Vec3) -> Scene {
-    scene_of(vec![sphere(center, 0.5, matte(RED))], vec3(0.0, 50.0, 0.0))
+fn ball_scene(center: V3) -> Scene {
+    scene_of(vec![sphere(center, 0.5, matte(RED))], v3(0.0, 50.0, 0.0))
 }
 
 #[test]
 fn turning_the_camera_left_brings_a_ball_on_the_left_into_view() {
-    let ball = vec3(-3.0, 0.0, -1.5); // far to the left of the default view
+    let ball = v3(-3.0, 0.0, -1.5); // far to the left of the default view
     let scene = ball_scene(ball);
-    let turned = camera_at(vec3(0.0, 0.0, 0.0), FRAC_PI_2, 0.0);
+    let turned = camera_at(v3(0.0, 0.0, 0.0), FRAC_PI_2, 0.0);
     let where_seen = project(&turned, ball);
     let seen = rgb(&frame_of(&scene, &turned), where_seen);
     assert!(
@@ -497,9 +494,9 @@ fn turning_the_camera_left_brings_a_ball_on_the_left_into_view() {
 fn tilting_the_camera_up_brings_a_ball_above_into_view() {
     // The ball is 1.11 radians up from -z; tilted 0.9 up, the camera sees it in the upper half
     // of the view, where an upside-down image would not show it.
-    let ball = vec3(0.0, 3.0, -1.5);
+    let ball = v3(0.0, 3.0, -1.5);
     let scene = ball_scene(ball);
-    let tilted = camera_at(vec3(0.0, 0.0, 0.0), 0.0, 0.9);
+    let tilted = camera_at(v3(0.0, 0.0, 0.0), 0.0, 0.9);
     let where_seen = project(&tilted, ball);
     let seen = rgb(&frame_of(&scene, &tilted), where_seen);
     assert!(
@@ -516,9 +513,9 @@ fn tilting_the_camera_up_brings_a_ball_above_into_view() {
 
 #[test]
 fn moving_the_camera_moves_the_view() {
-    let ball = vec3(2.0, 0.5, -4.0);
+    let ball = v3(2.0, 0.5, -4.0);
     let scene = ball_scene(ball);
-    let level_with_it = camera_at(vec3(2.0, 0.5, 0.0), 0.0, 0.0); // the ball now dead ahead
+    let level_with_it = camera_at(v3(2.0, 0.5, 0.0), 0.0, 0.0); // the ball now dead ahead
     let middle = (VIEW / 2, VIEW / 2);
     let seen = rgb(&frame_of(&scene, &level_with_it), middle);
     assert!(
@@ -539,10 +536,10 @@ fn a_camera_inside_a_sphere_sees_its_inside() {
     // ball's own wall stands between each point of it and the light: each bounce, and so each
     // pixel, shows the ambient share alone. A surface seen from the wrong side would send its
     // mirror rays out to the floor and the sky.
-    let center = vec3(0.3, 0.0, -4.5);
+    let center = v3(0.3, 0.0, -4.5);
     let scene = scene_of(
         vec![checkered_floor(), sphere(center, 1.0, mirror(WHITE, 0.85))],
-        vec3(-3.0, 5.0, 1.0),
+        v3(-3.0, 5.0, 1.0),
     );
     let frame = frame_of(&scene, &camera_at(center, 0.0, 0.0));
     let expected = bytes(WHITE * README_AMBIENT);
@@ -561,11 +558,11 @@ fn a_camera_inside_a_sphere_sees_its_inside() {
 
 #[test]
 fn from_below_the_floor_its_underside_gets_only_ambient_light() {
-    let scene = scene_of(vec![checkered_floor()], vec3(0.0, 5.0, 0.0));
-    let below = camera_at(vec3(0.0, -3.0, 0.0), 0.0, 1.0);
+    let scene = scene_of(vec![checkered_floor()], v3(0.0, 5.0, 0.0));
+    let below = camera_at(v3(0.0, -3.0, 0.0), 0.0, 1.0);
     let frame = frame_of(&scene, &below);
     // The light is above the floor: its underside faces away from it.
-    let pixel = project(&below, vec3(0.5, FLOOR_Y, -1.5));
+    let pixel = project(&below, v3(0.5, FLOOR_Y, -1.5));
     let point = floor_seen(&below, pixel);
     let green = rgb(&frame, pixel)[1];
     let expected = byte(WHITE.y * README_AMBIENT * square_share(point));
@@ -589,11 +586,11 @@ fn from_below_the_floor_its_underside_gets_only_ambient_light() {
 
 #[test]
 fn looking_straight_down_shows_the_checkered_floor() {
-    let light = vec3(0.0, 5.0, 0.0);
+    let light = v3(0.0, 5.0, 0.0);
     let scene = scene_of(vec![checkered_floor()], light);
-    let down = camera_at(vec3(0.0, 0.0, 0.0), 0.0, -FRAC_PI_2);
+    let down = camera_at(v3(0.0, 0.0, 0.0), 0.0, -FRAC_PI_2);
     let frame = frame_of(&scene, &down);
-    for point in [vec3(0.5, FLOOR_Y, 0.5), vec3(-0.5, FLOOR_Y, 0.5)] {
+    for point in [v3(0.5, FLOOR_Y, 0.5), v3(-0.5, FLOOR_Y, 0.5)] {
         let green = rgb(&frame, project(&down, point))[1];
         let odd = on_an_odd_square(point);
         assert!(
@@ -611,12 +608,12 @@ fn looking_straight_down_shows_the_checkered_floor() {
 fn a_light_inside_a_sphere_leaves_everything_else_in_shadow() {
     // The light at the centre of a white ball: the floor and the ball's outside get only the
     // ambient share of their colour.
-    let lamp = vec3(0.0, 2.0, -3.0);
+    let lamp = v3(0.0, 2.0, -3.0);
     let mut scene = scene_of(
         vec![checkered_floor(), sphere(lamp, 0.5, matte(WHITE))],
         lamp,
     );
-    scene.sky = vec3(0.0, 0.0, 0.0);
+    scene.sky = v3(0.0, 0.0, 0.0).into();
     let frame = frame_of(&scene, &Camera::default());
     let most = byte(README_AMBIENT);
     for y in (0..VIEW).step_by(EVERY) {

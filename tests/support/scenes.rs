@@ -1,12 +1,89 @@
 //! The tests' own scenes and geometry. Each expectation is worked out here from the slides'
-//! formulas (the camera's screen, the ray-sphere quadratic, N.L), with main.rs's vector maths but
-//! none of its tracer; and how the tests print points and poses in their messages.
+//! formulas (the camera's screen, the ray-sphere quadratic, N.L) with the tests' own vector maths,
+//! `V3`, and none of main.rs's: a slip there (in dot, length, +, -, *) then fails the tests of the
+//! steps it breaks instead of moving their expectations too. Here too: how the tests print points
+//! and poses, and a frame that never ends failing as a sentence.
 use crate::*;
 use std::fmt;
+use std::io::Write;
+use std::ops::{Add, Mul, Sub};
+use std::sync::mpsc;
+use std::time::Duration;
+
+/// The tests' own 3D vector: a point, a direction or a colour (x, y, z = red, green, blue).
+#[derive(Clone, Copy, Default, PartialEq)]
+pub struct V3 {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+}
+
+pub const fn v3(x: f64, y: f64, z: f64) -> V3 {
+    V3 { x, y, z }
+}
+
+impl V3 {
+    pub fn dot(self, other: V3) -> f64 {
+        self.x * other.x + self.y * other.y + self.z * other.z
+    }
+    pub fn length(self) -> f64 {
+        self.dot(self).sqrt()
+    }
+    pub fn normalize(self) -> V3 {
+        self * (1.0 / self.length())
+    }
+    pub fn cross(self, other: V3) -> V3 {
+        v3(
+            self.y * other.z - self.z * other.y,
+            self.z * other.x - self.x * other.z,
+            self.x * other.y - self.y * other.x,
+        )
+    }
+}
+
+impl Add for V3 {
+    type Output = V3;
+    fn add(self, other: V3) -> V3 {
+        v3(self.x + other.x, self.y + other.y, self.z + other.z)
+    }
+}
+
+impl Sub for V3 {
+    type Output = V3;
+    fn sub(self, other: V3) -> V3 {
+        v3(self.x - other.x, self.y - other.y, self.z - other.z)
+    }
+}
+
+impl Mul<f64> for V3 {
+    type Output = V3;
+    fn mul(self, scale: f64) -> V3 {
+        v3(self.x * scale, self.y * scale, self.z * scale)
+    }
+}
+
+/// A test's point handed to the program, and the program's read back: field by field.
+impl From<V3> for Vec3 {
+    fn from(V3 { x, y, z }: V3) -> Vec3 {
+        Vec3 { x, y, z }
+    }
+}
+
+impl From<Vec3> for V3 {
+    fn from(Vec3 { x, y, z }: Vec3) -> V3 {
+        V3 { x, y, z }
+    }
+}
+
+impl fmt::Debug for V3 {
+    fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        write!(f, "({:.2}, {:.2}, {:.2})", self.x, self.y, self.z)
+    }
+}
 
 impl fmt::Debug for Vec3 {
     fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
-        write!(f, "({:.2}, {:.2}, {:.2})", self.x, self.y, self.z)
+        V3::from(*self).fmt(f)
     }
 }
 
@@ -61,36 +138,37 @@ pub fn holds(figures: &[&str]) -> String {
     )
 }
 
-pub const SKY: Vec3 = vec3(0.4, 0.6, 1.0);
-pub const WHITE: Vec3 = vec3(1.0, 1.0, 1.0);
-pub const RED: Vec3 = vec3(0.9, 0.1, 0.1);
-pub const PURE_RED: Vec3 = vec3(1.0, 0.0, 0.0); // its outline on the map is exactly 0xff0000
-pub const PURE_GREEN: Vec3 = vec3(0.0, 1.0, 0.0);
-pub const PURE_BLUE: Vec3 = vec3(0.0, 0.0, 1.0);
+pub const SKY: V3 = v3(0.4, 0.6, 1.0);
+pub const WHITE: V3 = v3(1.0, 1.0, 1.0);
+pub const RED: V3 = v3(0.9, 0.1, 0.1);
+pub const PURE_RED: V3 = v3(1.0, 0.0, 0.0); // its outline on the map is exactly 0xff0000
+pub const PURE_GREEN: V3 = v3(0.0, 1.0, 0.0);
+pub const PURE_BLUE: V3 = v3(0.0, 0.0, 1.0);
 pub const FLOOR_Y: f64 = -1.0;
 pub const HALF_VIEW: f64 = VIEW as f64 / 2.0; // the screen's middle, in pixels from an edge
 
-pub fn matte(color: Vec3) -> Material {
+pub fn matte(color: V3) -> Material {
     mirror(color, 0.0)
 }
 
 /// A surface that reflects `reflectivity` of what its mirror ray brings back.
-pub fn mirror(color: Vec3, reflectivity: f64) -> Material {
+pub fn mirror(color: V3, reflectivity: f64) -> Material {
     Material {
-        color,
+        color: color.into(),
         reflectivity,
         checkered: false,
     }
 }
 
-pub fn sphere(center: Vec3, radius: f64, material: Material) -> (Primitive, Material) {
+pub fn sphere(center: V3, radius: f64, material: Material) -> (Primitive, Material) {
+    let center = center.into();
     (Primitive::Sphere { center, radius }, material)
 }
 
 /// A white checkered floor y = FLOOR_Y: the plane p.N + d = 0 with N = (0, 1, 0), d = -FLOOR_Y.
 pub fn checkered_floor() -> (Primitive, Material) {
     let floor = Primitive::Plane {
-        normal: vec3(0.0, 1.0, 0.0),
+        normal: v3(0.0, 1.0, 0.0).into(),
         offset: -FLOOR_Y,
     };
     let checkered = Material {
@@ -100,26 +178,57 @@ pub fn checkered_floor() -> (Primitive, Material) {
     (floor, checkered)
 }
 
-pub fn scene_of(objects: Vec<(Primitive, Material)>, light: Vec3) -> Scene {
+pub fn scene_of(objects: Vec<(Primitive, Material)>, light: V3) -> Scene {
     Scene {
         objects,
-        light,
-        sky: SKY,
+        light: light.into(),
+        sky: SKY.into(),
     }
 }
 
 /// A camera at `position` turned `yaw` radians left and tilted `pitch` radians up.
-pub fn camera_at(position: Vec3, yaw: f64, pitch: f64) -> Camera {
+pub fn camera_at(position: V3, yaw: f64, pitch: f64) -> Camera {
     Camera {
-        position,
+        position: position.into(),
         yaw,
         pitch,
     }
 }
 
+/// The eye's position, in the tests' own maths.
+pub fn eye(camera: &Camera) -> V3 {
+    camera.position.into()
+}
+
+/// The program's ray from `origin` along `direction`, as far as `t`.
+pub fn ray_from(origin: V3, direction: V3, t: f64) -> Ray {
+    Ray::new(origin.into(), direction.into(), t)
+}
+
+/// A frame takes tens of milliseconds; one that takes this long will not end.
+const FRAME_LIMIT: Duration = Duration::from_secs(10);
+
+/// The frame `render` draws of `scene` from `camera`. If it has not finished after FRAME_LIMIT,
+/// the test program stops with a sentence saying so, rather than running for ever.
 pub fn frame_of(scene: &Scene, camera: &Camera) -> Vec<u32> {
+    let (finished, watched) = mpsc::channel::<()>();
+    let pose = format!("{camera:?}");
+    std::thread::spawn(move || {
+        if watched.recv_timeout(FRAME_LIMIT) == Err(mpsc::RecvTimeoutError::Timeout) {
+            let _ = writeln!(
+                std::io::stderr(),
+                "A frame from {pose} did not finish in {} s (it takes well under a second): \
+                 render never ends. Look in src/main.rs for a slip in the vector maths (dot, \
+                 length, normalize, +, -, *), which can make draw_ray's count of dots endless, \
+                 or for a loop that never stops.",
+                FRAME_LIMIT.as_secs()
+            );
+            std::process::exit(1);
+        }
+    });
     let mut frame = vec![0; WIDTH * VIEW];
     render(scene, camera, &mut frame);
+    drop(finished); // the watcher wakes and ends
     frame
 }
 
@@ -134,48 +243,40 @@ pub fn byte(channel: f64) -> u32 {
     (channel * 255.0) as u32
 }
 
-pub fn bytes(color: Vec3) -> [u32; 3] {
+pub fn bytes(color: V3) -> [u32; 3] {
     [byte(color.x), byte(color.y), byte(color.z)]
 }
 
 /// A colour as a 0RGB pixel, as the map draws a ball's outline.
-pub fn pixel_of(color: Vec3) -> u32 {
+pub fn pixel_of(color: V3) -> u32 {
     let [red, green, blue] = bytes(color);
     red << 16 | green << 8 | blue
 }
 
 /// The README's shading: ambient + (1 - ambient) N.L, where N.L <= 0 (the light behind the
 /// surface) adds nothing.
-pub fn lit_share(point: Vec3, normal: Vec3, light: Vec3) -> f64 {
+pub fn lit_share(point: V3, normal: V3, light: V3) -> f64 {
     let n_dot_l = normal.dot((light - point).normalize());
     README_AMBIENT + (1.0 - README_AMBIENT) * n_dot_l.max(0.0)
 }
 
-fn cross(a: Vec3, b: Vec3) -> Vec3 {
-    vec3(
-        a.y * b.z - a.z * b.y,
-        a.z * b.x - a.x * b.z,
-        a.x * b.y - a.y * b.x,
-    )
-}
-
 /// The camera's view, right and up directions: it looks along
 /// (-sin yaw cos pitch, sin pitch, -cos yaw cos pitch), right is level, up is right x view.
-pub fn camera_axes(camera: &Camera) -> (Vec3, Vec3, Vec3) {
+pub fn camera_axes(camera: &Camera) -> (V3, V3, V3) {
     let Camera { yaw, pitch, .. } = *camera;
-    let view = vec3(
+    let view = v3(
         -yaw.sin() * pitch.cos(),
         pitch.sin(),
         -yaw.cos() * pitch.cos(),
     );
-    let right = vec3(yaw.cos(), 0.0, -yaw.sin());
-    (view, right, cross(right, view))
+    let right = v3(yaw.cos(), 0.0, -yaw.sin());
+    (view, right, right.cross(view))
 }
 
 /// The 3D view's pixel that shows a world point: the slide's screen, d ahead, 2 wide and 2 high.
-pub fn project(camera: &Camera, point: Vec3) -> (usize, usize) {
+pub fn project(camera: &Camera, point: V3) -> (usize, usize) {
     let (view, right, up) = camera_axes(camera);
-    let d = point - camera.position;
+    let d = point - eye(camera);
     let ahead = d.dot(view) / README_SCREEN_DISTANCE;
     let across = d.dot(right) / ahead; // from -1 at the left edge to 1 at the right
     let upward = d.dot(up) / ahead; // from -1 at the bottom to 1 at the top
@@ -191,7 +292,7 @@ pub fn project(camera: &Camera, point: Vec3) -> (usize, usize) {
 /// Where a ray O + tD from outside a sphere first meets it, by the quadratic |O + tD - C|² = r²:
 /// the near root, if it is in front. D is unit, so the quadratic's a is 1, and with b halved its
 /// roots are t = -b/2 ± √((b/2)² - c).
-pub fn ray_sphere(origin: Vec3, direction: Vec3, center: Vec3, radius: f64) -> Option<Vec3> {
+pub fn ray_sphere(origin: V3, direction: V3, center: V3, radius: f64) -> Option<V3> {
     let d = direction.normalize();
     let oc = origin - center;
     let half_b = oc.dot(d);
@@ -204,7 +305,7 @@ pub fn ray_sphere(origin: Vec3, direction: Vec3, center: Vec3, radius: f64) -> O
 }
 
 /// The ray through the centre of the 3D view's pixel (x, y): D = p(u, v) - E on the slide's screen.
-pub fn pixel_direction(camera: &Camera, (x, y): (usize, usize)) -> Vec3 {
+pub fn pixel_direction(camera: &Camera, (x, y): (usize, usize)) -> V3 {
     let (view, right, up) = camera_axes(camera);
     let across = (x as f64 + 0.5) / HALF_VIEW - 1.0;
     let upward = 1.0 - (y as f64 + 0.5) / HALF_VIEW;
@@ -212,13 +313,13 @@ pub fn pixel_direction(camera: &Camera, (x, y): (usize, usize)) -> Vec3 {
 }
 
 /// Where the ray through the 3D view's pixel (x, y) meets the floor: t = (FLOOR_Y - E.y) / D.y.
-pub fn floor_seen(camera: &Camera, pixel: (usize, usize)) -> Vec3 {
+pub fn floor_seen(camera: &Camera, pixel: (usize, usize)) -> V3 {
     let d = pixel_direction(camera, pixel);
-    camera.position + d * ((FLOOR_Y - camera.position.y) / d.y)
+    eye(camera) + d * ((FLOOR_Y - camera.position.y) / d.y)
 }
 
 /// The map's sampled rays: through every 10th column's centre on the screen's middle row.
-pub fn sampled_directions(camera: &Camera) -> Vec<Vec3> {
+pub fn sampled_directions(camera: &Camera) -> Vec<V3> {
     let (view, right, _) = camera_axes(camera);
     (0..VIEW)
         .step_by(README_SAMPLED_EVERY)
@@ -228,13 +329,13 @@ pub fn sampled_directions(camera: &Camera) -> Vec<Vec3> {
 
 /// The slide's checkerboard F for squares README_SQUARE_SIZE wide, with floor: is the floor square
 /// under this point an odd one?
-pub fn on_an_odd_square(point: Vec3) -> bool {
+pub fn on_an_odd_square(point: V3) -> bool {
     let square = |w: f64| (w / README_SQUARE_SIZE).floor() as i64;
     ((square(point.x) + square(point.z)) & 1) == 1
 }
 
 /// The share of the light a floor point's square shows: README_ODD_SQUARE on an odd one, else all.
-pub fn square_share(point: Vec3) -> f64 {
+pub fn square_share(point: V3) -> f64 {
     if on_an_odd_square(point) {
         README_ODD_SQUARE
     } else {
@@ -244,8 +345,8 @@ pub fn square_share(point: Vec3) -> f64 {
 
 /// Does a floor point's green byte show a dark square? Dark is under half of what a lit white even
 /// square there shows: the odd squares are far darker, the even ones that bright.
-pub fn is_dark(green: u32, point: Vec3, light: Vec3) -> bool {
-    let up = vec3(0.0, 1.0, 0.0);
+pub fn is_dark(green: u32, point: V3, light: V3) -> bool {
+    let up = v3(0.0, 1.0, 0.0);
     green < byte(WHITE.y * lit_share(point, up, light)) / 2
 }
 

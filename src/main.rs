@@ -101,7 +101,8 @@ impl Camera {
     /// Step 4: the primary ray through (x, y), in pixels from the screen's top left, from O = E.
     fn primary_ray(&self, x: f64, y: f64) -> Ray {
         let (forward, right, up) = self.axes(); // V, right, up
-        // C, p0, p1, p2 relative to E, as in floats (E + x) - E is not x: a level row would tilt.
+        // C, p0, p1, p2 relative to E, not in the world: there rounding would tilt a level row,
+        // and the map would show rays that pass above the floor hitting it.
         let center = forward * SCREEN_DISTANCE;
         let p0 = center - right - up;
         let p1 = center + right - up;
@@ -214,8 +215,7 @@ struct Hit {
 }
 
 impl Hit {
-    /// A ray leaving the hit, lifted along N: P rounds to a point just under the surface as often
-    /// as over it, and a ray from there would hit the surface it leaves (dark speckles).
+    /// A ray leaving the hit, lifted along N: from a P rounded to under its surface, it would hit it.
     fn outgoing(&self, direction: Vec3, t: f64) -> Ray {
         Ray::new(self.point + self.normal * LIFT, direction, t)
     }
@@ -281,9 +281,8 @@ impl Scene {
     }
 }
 
-/// Step 8, the slide's checkerboard F = ((int)(2 λ1) + (int)λ2) & 1, λ1 = x, λ2 = z: unit squares
-/// (no 2, which would halve them in x), and floor for (int): truncating would round -0.5 and 0.5
-/// both to 0, and the squares either side of x = 0 and of z = 0 would merge into one twice as wide.
+/// Step 8, the slide's checkerboard F = ((int)(2 λ1) + (int)λ2) & 1, λ1 = x, λ2 = z, of unit squares
+/// (no 2) and with floor for (int): truncating would merge the squares either side of 0 in one.
 fn odd_square(point: Vec3) -> bool {
     (point.x.floor() as i64 + point.z.floor() as i64) & 1 == 1
 }
@@ -307,8 +306,9 @@ fn to_rgb(color: Vec3) -> u32 {
 // The 2D slice, the assignment's "for y = 0, visualize every 10th ray", seen from above (x to the
 // right, -z up): the plane of the screen's middle row, through the eye along V and right. It is
 // y = 0 in the start pose and tilts with the camera, so that the sampled rays always lie in it.
-const MAP_CORNER: Vec3 = vec3(-6.4, 0.0, -9.4); // the map's top left x and z
-const MAP_SIDE: f64 = 12.8; // the map shows 12.8 x 12.8 units around the demo, at any VIEW
+const MAP_SIDE: f64 = 12.8; // the map is the same square of the world at any VIEW, this wide,
+const EYE_OVER_EDGE: f64 = 3.4; // with the start eye this far over its bottom edge, the demo above
+const MAP_CORNER: Vec3 = vec3(-MAP_SIDE / 2.0, 0.0, EYE_OVER_EDGE - MAP_SIDE); // its top left x, z
 const MAP_SCALE: f64 = VIEW as f64 / MAP_SIDE; // map pixels per world unit
 const SAMPLED_EVERY: usize = 10; // the assignment's "every 10th ray"
 const DOT_RADIUS: i32 = 1; // a hit's dot is 3 x 3 map pixels: 1 either side of its point
@@ -351,7 +351,7 @@ fn draw_ray(frame: &mut [u32], ray: &Ray, from: f64, color: u32) {
         }
         let at_0 = -o / d; // t = (edge - O) / D at the edge 0,
         let at_view = (VIEW as f64 - o) / d; // and at the edge VIEW
-        enter = enter.max(at_0.min(at_view));
+        enter = enter.max(at_0.min(at_view)); // from an eye off the map: from where it reaches it
         leave = leave.min(at_0.max(at_view));
     }
     let pixels_per_t = d_on_map.x.hypot(d_on_map.z); // along the map

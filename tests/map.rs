@@ -617,7 +617,12 @@ fn with_a_level_camera_the_slice_never_meets_the_floor() {
         let floor_only = frame_of(&scene_of(vec![checkered_floor()], light), &camera);
         assert!(
             map_of(&empty) == map_of(&floor_only),
-            "{camera:?}: the floor changes the map, so a level camera's sampled rays meet it"
+            "{camera:?}: the floor changes the map, so a level camera's sampled rays, which \
+             never come down to the floor, are drawn meeting it far off (yellow, a hit, where \
+             they should be sky blue, a miss). That is what happens when the screen is worked out \
+             in the world (C = E + dV, then D = p(u, v) - E): rounding there tilts the level row \
+             down. Keep C, p0, p1 and p2 relative to the eye (C = dV, D = p(u, v)), as \
+             primary_ray does, and E only as the ray's origin."
         );
     }
 }

@@ -386,7 +386,7 @@ fn every_tenth_ray_is_drawn_and_none_between() {
 fn leftmost_hit(camera: &Camera, center: V3, radius: f64) -> V3 {
     sampled_directions(camera)
         .into_iter()
-        .filter_map(|d| ray_sphere(eye(&camera), d, center, radius))
+        .filter_map(|d| ray_sphere(eye(camera), d, center, radius))
         .min_by(|a, b| a.x.total_cmp(&b.x))
         .expect("the test's set-up: a sampled ray hits the sphere")
 }

@@ -134,12 +134,12 @@ impl Primitive {
                 }
                 ahead(-(ray.origin.dot(normal) + offset) / slant)
             }
-            // The slide's test: c = C - O, t = c.D, p² = q.q for q = c - tD, a hit at t - √(r² - p²);
+            // The slide's test: c = C - O, t = c.D, p² = q.q, q = c - tD, a hit at t - √(r² - p²);
             // from inside (the camera may walk in) at t + √(r² - p²), which the slide leaves out.
             Primitive::Sphere { center, radius } => {
                 let c = center - ray.origin;
                 let t = c.dot(ray.direction);
-                let p2 = c.dot(c) - t * t; // q.q by Pythagoras: c is the hypotenuse, t and q the legs
+                let p2 = c.dot(c) - t * t; // q.q by Pythagoras: |c| the hypotenuse, t, |q| the legs
                 if p2 > radius * radius {
                     return None;
                 }
@@ -201,7 +201,7 @@ impl Default for Scene {
     }
 }
 
-// Steps 6, 8, 9, shading: colour = surface × (ambient + (1 - ambient) N.L if the shadow ray reaches
+// Steps 8 and 9, shading: colour = surface × (ambient + (1 - ambient) N.L if the shadow ray reaches
 // the light) × ODD_SQUARE_BRIGHTNESS on an odd square, mixed by reflectivity with what R sees.
 const AMBIENT: f64 = 0.1; // the share of the light a surface gets even in shadow
 const MAX_DEPTH: u32 = 5; // mirror bounces followed at most
@@ -215,7 +215,8 @@ struct Hit {
 }
 
 impl Hit {
-    /// A ray leaving the hit, lifted along N: from a P rounded to under its surface, it would hit it.
+    /// A ray leaving the hit, LIFT off its surface along N: from P itself, rounded to just under
+    /// the surface, it would hit that surface at once and speckle it with false shadow (acne).
     fn outgoing(&self, direction: Vec3, t: f64) -> Ray {
         Ray::new(self.point + self.normal * LIFT, direction, t)
     }
@@ -242,8 +243,9 @@ impl Scene {
             Primitive::Sphere { center, .. } => (point - center).normalize(),
             Primitive::Plane { normal, .. } => normal,
         };
-        let facing = outward.dot(ray.direction) < 0.0; // N faces the ray: seen from inside too
-        let normal = if facing { outward } else { outward * -1.0 }; // else N turned round
+        // N turned to face the ray: a ball seen from inside, the floor from below, lit on our side.
+        let facing = outward.dot(ray.direction) < 0.0;
+        let normal = if facing { outward } else { outward * -1.0 };
         Some(Hit {
             point,
             normal,
@@ -266,7 +268,7 @@ impl Scene {
         if let Some(mut shadow) = self.shadow_ray(&hit)
             && self.nearest_hit(&mut shadow).is_none()
         {
-            brightness += (1.0 - AMBIENT) * shadow.direction.dot(hit.normal);
+            brightness += (1.0 - AMBIENT) * shadow.direction.dot(hit.normal); // L is shadow's D
         }
         if hit.material.checkered && odd_square(hit.point) {
             brightness *= ODD_SQUARE_BRIGHTNESS;
@@ -281,10 +283,10 @@ impl Scene {
     }
 }
 
-/// Step 8, the slide's checkerboard F = ((int)(2 λ1) + (int)λ2) & 1, λ1 = x, λ2 = z, of unit squares
-/// (no 2) and with floor for (int): truncating would merge the squares either side of 0 in one.
+/// Step 8, the slide's checkerboard F = ((int)(2 λ1) + (int)λ2) & 1, λ1 = x, λ2 = z, with no 2 (it
+/// would halve the squares in x) and floor for (int) (truncating merges the squares beside 0).
 fn odd_square(point: Vec3) -> bool {
-    (point.x.floor() as i64 + point.z.floor() as i64) & 1 == 1
+    ((point.x.floor() as i64 + point.z.floor() as i64) & 1) == 1
 }
 
 // Rendering, the slide's step 6: each pixel of the 3D view its primary ray's colour; then the map.
@@ -306,8 +308,8 @@ fn to_rgb(color: Vec3) -> u32 {
 // The 2D slice, the assignment's "for y = 0, visualize every 10th ray", seen from above (x to the
 // right, -z up): the plane of the screen's middle row, through the eye along V and right. It is
 // y = 0 in the start pose and tilts with the camera, so that the sampled rays always lie in it.
-const MAP_SIDE: f64 = 12.8; // the map is the same square of the world at any VIEW, this wide,
-const EYE_OVER_EDGE: f64 = 3.4; // with the start eye this far over its bottom edge, the demo above
+const MAP_SIDE: f64 = 12.8; // the map shows the same square of the world at any VIEW, this wide
+const EYE_OVER_EDGE: f64 = 3.4; // the start eye this far over its bottom edge: the demo fits above
 const MAP_CORNER: Vec3 = vec3(-MAP_SIDE / 2.0, 0.0, EYE_OVER_EDGE - MAP_SIDE); // its top left x, z
 const MAP_SCALE: f64 = VIEW as f64 / MAP_SIDE; // map pixels per world unit
 const SAMPLED_EVERY: usize = 10; // the assignment's "every 10th ray"
@@ -324,7 +326,7 @@ const SHADOW_COLOR: u32 = 0x802000; // rust: a shadow ray that reaches the light
 const BLOCKED_COLOR: u32 = 0x6040a0; // violet: a shadow ray up to what blocks it, a dot there
 const MIRROR_COLOR: u32 = 0x008080; // teal: a mirror ray to its hit, a dot there, or the edge
 
-/// Colours the map pixels up to `radius` pixels either side of a world point, where on the map.
+/// Colours the map pixels up to `radius` pixels either side of a world point, those on the map.
 fn plot(frame: &mut [u32], point: Vec3, radius: i32, color: u32) {
     let on_map = 0.0..VIEW as f64;
     let middle = (point - MAP_CORNER) * MAP_SCALE; // the point in map pixels
@@ -406,7 +408,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
             Primitive::Plane { .. } => {}
         }
     }
-    // Through v = 0.5, between the middle pixel rows (on one for an odd VIEW): the slide's "y = 0".
+    // Through v = 0.5, between the two middle pixel rows: in the start pose, the slide's "y = 0".
     let sampled = || {
         (0..VIEW)
             .step_by(SAMPLED_EVERY)

@@ -27,8 +27,7 @@ impl Vec3 {
         self.dot(self).sqrt()
     }
     fn normalize(self) -> Vec3 {
-        let length = self.length();
-        vec3(self.x / length, self.y / length, self.z / length)
+        self * (1.0 / self.length()) // v / |v|
     }
 }
 

@@ -8,9 +8,13 @@ mod picture;
 #[path = "support/scenes.rs"]
 mod scenes;
 
-use scenes::{camera_at, v3};
+use scenes::{camera_at, frame_of, v3};
 use std::path::PathBuf;
-use std::process::{Command, Output};
+use std::process::{Command, Output, Stdio};
+use std::time::Duration;
+
+/// The example renders one frame, well under a second's work; this long, it never will.
+const COMMAND_LIMIT: Duration = Duration::from_secs(20);
 
 /// Runs the example with these arguments. Cargo puts it in `examples/`, beside the `deps/` that
 /// holds this test.
@@ -21,15 +25,32 @@ fn run_frame(args: &[&str]) -> Output {
         .and_then(|deps| deps.parent())
         .expect("the test in target/PROFILE/deps");
     let example = profile.join("examples").join("frame");
-    Command::new(&example)
+    let mut child = Command::new(&example)
         .args(args)
-        .output()
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
         .unwrap_or_else(|error| {
             panic!(
                 "the example could not be started from {}: {error}; `cargo test` builds it",
                 example.display()
             )
-        })
+        });
+    let started = Instant::now();
+    while child.try_wait().expect("the example's status").is_none() {
+        if started.elapsed() > COMMAND_LIMIT {
+            child.kill().ok();
+            panic!(
+                "`cargo run --example frame -- {}` did not finish in {} s: its one frame never \
+                 ends. Look in src/main.rs for a slip in the vector maths or a loop that never \
+                 stops (draw_ray's count of dots).",
+                args.join(" "),
+                COMMAND_LIMIT.as_secs()
+            );
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    child.wait_with_output().expect("the example's output")
 }
 
 /// A file of the test's own in the system's temporary folder.
@@ -51,9 +72,7 @@ fn the_frame_command_writes_the_demos_frame_from_the_pose_given() {
     let read = picture::read_png(file);
     std::fs::remove_file(&path).ok();
     let ((width, height), written) = read.unwrap_or_else(|error| panic!("{error}"));
-    let mut frame = vec![0; WIDTH * VIEW];
-    render(&Scene::default(), &camera, &mut frame);
-    let expected = picture::rgb_bytes(&frame);
+    let expected = picture::rgb_bytes(&frame_of(&Scene::default(), &camera));
     assert!(
         (width, height) == (WIDTH as u32, VIEW as u32),
         "the PNG should be the window's {WIDTH} x {VIEW}, not {width} x {height}"

@@ -14,7 +14,7 @@ use std::process::{Command, Output, Stdio};
 use std::time::Duration;
 
 /// The example renders one frame, well under a second's work; this long, it never will.
-const COMMAND_LIMIT: Duration = Duration::from_secs(20);
+const COMMAND_LIMIT: Duration = Duration::from_secs(10);
 
 /// Runs the example with these arguments. Cargo puts it in `examples/`, beside the `deps/` that
 /// holds this test.

@@ -206,7 +206,7 @@ pub fn ray_from(origin: V3, direction: V3, t: f64) -> Ray {
 }
 
 /// A frame takes tens of milliseconds; one that takes this long will not end.
-const FRAME_LIMIT: Duration = Duration::from_secs(10);
+const FRAME_LIMIT: Duration = Duration::from_secs(5);
 
 /// The frame `render` draws of `scene` from `camera`. If it has not finished after FRAME_LIMIT,
 /// the test program stops with a sentence saying so, rather than running for ever.

@@ -69,12 +69,11 @@ impl Ray {
     }
 }
 
-// Steps 1 and 4, the camera: eye E looking along V at a screen centred on C = E + dV. Its corners
-// are p0 bottom left, p1 bottom right, p2 top left; a ray goes through p(u, v) = p0 + u(p1 - p0) +
-// v(p2 - p0). By default it is at (0, 0, 0) looking at (0, 0, -1), as the assignment sets it.
+// Steps 1 and 4, the camera: eye E looking along V at a screen centred on C = E + dV, corners p0
+// bottom left, p1 bottom right, p2 top left; a ray through p(u, v) = p0 + u(p1 - p0) + v(p2 - p0).
 const SCREEN_DISTANCE: f64 = 1.0; // the slide's d: a screen 2 wide at distance 1 sees 90 degrees
 
-#[derive(Clone, Copy, Default, PartialEq)]
+#[derive(Clone, Copy, Default, PartialEq)] // by default at (0, 0, 0) looking at (0, 0, -1)
 struct Camera {
     position: Vec3,
     yaw: f64,   // radians about +y; positive turns the view left
@@ -88,8 +87,7 @@ fn heading(yaw: f64, pitch: f64) -> Vec3 {
 }
 
 impl Camera {
-    /// V, right and up: the slide's camera matrix [right | up | -V] turns its (1, 0, 0), (0, 1, 0)
-    /// and (0, 0, -1) into right, up and V, so that p0 = C + (-1, -1, 0) becomes C - right - up.
+    /// V, right and up: the slide's camera matrix [right | up | -V] turns x, y and -z into them.
     fn axes(&self) -> (Vec3, Vec3, Vec3) {
         (
             heading(self.yaw, self.pitch),
@@ -100,10 +98,9 @@ impl Camera {
     /// Step 4: the primary ray through (x, y), in pixels from the screen's top left, from O = E.
     fn primary_ray(&self, x: f64, y: f64) -> Ray {
         let (forward, right, up) = self.axes(); // V, right, up
-        // C, p0, p1, p2 relative to E, not in the world: there rounding would tilt a level row,
-        // and the map would show rays that pass above the floor hitting it.
+        // C, p0, p1, p2 relative to E: in the world, rounding would tilt a level row to the floor.
         let center = forward * SCREEN_DISTANCE;
-        let p0 = center - right - up;
+        let p0 = center - right - up; // the slide's C + (-1, -1, 0), turned by the camera matrix
         let p1 = center + right - up;
         let p2 = center - right + up;
         let u = x / VIEW as f64;
@@ -164,11 +161,10 @@ struct Scene {
 }
 
 impl Default for Scene {
-    /// The demo: a white checkered floor y = -1 and four balls, one a mirror, under one light.
+    /// The demo: four balls (centre, radius, colour, reflectivity) on a checkered floor, one light.
     fn default() -> Scene {
         let white = vec3(0.9, 0.9, 0.9);
         let balls = [
-            // centre, radius, colour, reflectivity
             (vec3(0.3, 0.0, -4.5), 1.0, white, 0.85), // a mirror
             (vec3(-2.0, -0.2, -4.2), 0.8, vec3(0.9, 0.2, 0.2), 0.0), // red
             (vec3(1.9, -0.4, -3.4), 0.6, vec3(0.2, 0.8, 0.3), 0.0), // green
@@ -304,9 +300,8 @@ fn to_rgb(color: Vec3) -> u32 {
     byte(color.x) << 16 | byte(color.y) << 8 | byte(color.z)
 }
 
-// The 2D slice, the assignment's "for y = 0, visualize every 10th ray", seen from above (x to the
-// right, -z up): the plane of the screen's middle row, through the eye along V and right. It is
-// y = 0 in the start pose and tilts with the camera, so that the sampled rays always lie in it.
+// The 2D slice, the assignment's "for y = 0, visualize every 10th ray", seen from above (x right,
+// -z up): the plane of the screen's middle row, y = 0 at the start, tilting so its rays stay in it.
 const MAP_SIDE: f64 = 12.8; // the map shows the same square of the world at any VIEW, this wide
 const EYE_OVER_EDGE: f64 = 3.4; // the start eye this far over its bottom edge: the demo fits above
 const MAP_CORNER: Vec3 = vec3(-MAP_SIDE / 2.0, 0.0, EYE_OVER_EDGE - MAP_SIDE); // its top left x, z
@@ -376,8 +371,7 @@ fn follow(frame: &mut [u32], scene: &Scene, mut ray: Ray, from: f64, on_hit: u32
     plot(frame, hit.point, DOT_RADIUS, on_hit);
 }
 
-/// The map, back to front so that what matters most lies on top: the balls' outlines, the shadow
-/// and mirror rays from the sampled rays' hits, the sampled rays, the screen, the markers.
+/// The map back to front, the key things on top: outlines, shadow and mirror rays, rays, markers.
 fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     for row in frame.chunks_mut(WIDTH) {
         row[VIEW..].fill(BACKGROUND);
@@ -403,8 +397,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
                     draw_ray(frame, &chord_ray, 0.0, to_rgb(material.color));
                 }
             }
-            // Not drawn: its line on the slice would bury the rays; the rays' dots show its hits.
-            Primitive::Plane { .. } => {}
+            Primitive::Plane { .. } => {} // not drawn: its line would bury the rays' dots on it
         }
     }
     // Through v = 0.5, between the two middle pixel rows: in the start pose, the slide's "y = 0".
@@ -441,7 +434,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     }
 }
 
-// Step 7, the controls: a step reads the keys, moves the camera, renders and shows.
+// Step 7, the controls: each step reads the keys and moves the camera, rendering only what changed.
 const MOVE_SPEED: f64 = 2.0; // units a second along each held key's direction
 const TURN_SPEED: f64 = 1.5; // radians a second
 
@@ -467,13 +460,12 @@ const STEPS_PER_SECOND: usize = 60; // a screen's rate: at rest each step mostly
 const RESEND_EVERY: usize = STEPS_PER_SECOND / 2; // at rest a step in this many sends the frame
 
 fn main() {
-    let title = "raytracer - W A S D R F move, arrows turn, Home: back to the start, Esc quits";
     let options = WindowOptions {
         resize: true, // the user may size the window: the frame is scaled to fit, 2:1 kept
         scale_mode: ScaleMode::AspectRatioStretch,
         ..WindowOptions::default()
     };
-    let mut window = Window::new(title, WIDTH, VIEW, options).unwrap_or_else(|error| {
+    let mut window = Window::new("raytracer", WIDTH, VIEW, options).unwrap_or_else(|error| {
         // No window, most often for want of an X server: one line on why, and exit status 1.
         match std::env::var_os("DISPLAY") {
             None => eprintln!("raytracer: {error}, as DISPLAY is not set"),
@@ -485,23 +477,27 @@ fn main() {
     let scene = Scene::default();
     let mut camera = Camera::default();
     let mut frame = vec![BACKGROUND; WIDTH * VIEW];
-    let mut rendered = None; // the camera `frame` shows, none at first: render when it differs
-    let mut steps_at_rest = 0; // re-sent, the frame shows again in a window uncovered or resized
+    let mut rendered = None; // the camera and window size `frame` is drawn for, none at first
+    let mut steps_at_rest = 0; // re-sent, the frame shows again in a window uncovered
     let mut stale = Vec::new(); // keys held when the focus left: ignored until let go
     let mut last_step = Instant::now(); // the camera moves by speed × each step's time
     while window.is_open() && !window.is_key_down(Key::Escape) {
         let keys = keys_down(&window, &mut stale);
         camera = moved(camera, &keys, last_step.elapsed().as_secs_f64());
         last_step = Instant::now();
-        if rendered != Some(camera) {
+        if rendered != Some((camera, window.get_size())) {
             render(&scene, &camera, &mut frame);
-            rendered = Some(camera);
+            rendered = Some((camera, window.get_size())); // a resized window is black: redraw it
             steps_at_rest = 0;
+            let Vec3 { x, y, z } = camera.position; // the pose, as the frame command takes it:
+            let Camera { yaw, pitch, .. } = camera; // saved with it, a frame is what the user sees
+            window.set_title(&format!(
+                "raytracer - pose {x:.2} {y:.2} {z:.2} {yaw:.2} {pitch:.2}"
+            ));
         }
         if steps_at_rest % RESEND_EVERY == 0 {
-            window
-                .update_with_buffer(&frame, WIDTH, VIEW)
-                .expect("a frame the window's size");
+            let sent = window.update_with_buffer(&frame, WIDTH, VIEW);
+            sent.expect("a frame the window's size");
         } else {
             window.update(); // at rest: reads the keys and paces the loop; nothing rendered or sent
         }

@@ -1,7 +1,8 @@
 //! What tests/window.rs needs to run the built program in a real X server and look at it: a
-//! private Xvfb, the program on it, xdotool for the keys and the window's size, and x11rb for
-//! screenshots, windows of the test's own and a window manager's close request. Everything the
-//! test starts is killed when its `Session` is dropped, also when the test fails.
+//! private Xvfb, the program on it, xdotool for the keys, and x11rb for screenshots, the window's
+//! title, size hints and size, windows of the test's own, a window manager's close request, and
+//! X's DAMAGE extension to count the frames the program sends. Everything the test starts is
+//! killed when its `Session` is dropped, also when the test fails.
 use std::io::{BufRead, BufReader};
 use std::process::{Child, Command, ExitStatus, Stdio};
 use std::sync::{Mutex, MutexGuard, mpsc};
@@ -10,8 +11,12 @@ use std::time::{Duration, Instant};
 use x11rb::connection::Connection;
 use x11rb::cookie::{Cookie, VoidCookie};
 use x11rb::errors::{ConnectionError, ReplyError};
+use x11rb::properties::WmSizeHints;
+use x11rb::protocol::Event;
+use x11rb::protocol::damage::{ConnectionExt as _, ReportLevel};
 use x11rb::protocol::xproto::{
-    ClientMessageEvent, ConnectionExt as _, CreateWindowAux, EventMask, ImageFormat, WindowClass,
+    AtomEnum, ClientMessageEvent, ConfigureWindowAux, ConnectionExt as _, CreateWindowAux,
+    EventMask, ImageFormat, WindowClass,
 };
 use x11rb::rust_connection::RustConnection;
 use x11rb::x11_utils::TryParse;
@@ -222,10 +227,60 @@ impl Session {
         (geometry.width, geometry.height)
     }
 
+    /// The program's window's title (WM_NAME), as a window manager shows it above the window.
+    pub fn title(&self) -> String {
+        let (name, any) = (AtomEnum::WM_NAME, AtomEnum::ANY);
+        let title = self.x.get_property(false, self.window, name, any, 0, 1024);
+        String::from_utf8_lossy(&answer(title, "title of the window").value).into_owned()
+    }
+
+    /// The size the window's WM_NORMAL_HINTS fix it at (their least and greatest size the same),
+    /// which a window manager then keeps; None if they leave it free. Xvfb has no window manager.
+    pub fn fixed_size(&self) -> Option<(i32, i32)> {
+        let hints = WmSizeHints::get_normal_hints(&self.x, self.window)
+            .map_err(ReplyError::from)
+            .and_then(|cookie| cookie.reply())
+            .unwrap_or_else(|error| panic!("Xvfb gave no WM_NORMAL_HINTS of the window: {error}"));
+        let hints = hints?;
+        hints.max_size.filter(|&most| hints.min_size == Some(most))
+    }
+
+    /// Starts counting the frames the program puts in its window, from outside: X's DAMAGE
+    /// extension reports each drawing into the window, and the program draws only by sending a
+    /// frame (minifb's one XPutImage of the whole window).
+    pub fn watch_updates(&self) -> Updates<'_> {
+        let version = self.x.damage_query_version(1, 1);
+        answer(version, "version of its DAMAGE extension");
+        let id = self.x.generate_id().expect("an X id for the DAMAGE object");
+        let create = self
+            .x
+            .damage_create(id, self.window, ReportLevel::RAW_RECTANGLES);
+        checked(create, "watch the program's window with DAMAGE");
+        let updates = Updates {
+            x: &self.x,
+            damage: id,
+        };
+        updates.take(); // DAMAGE's first report, the whole window, is no frame
+        updates
+    }
+
     /// The program's window's top left corner on the screen.
     pub fn position(&self) -> (i16, i16) {
         let geometry = answer(self.x.get_geometry(self.window), "geometry of the window");
         (geometry.x, geometry.y)
+    }
+
+    /// Makes the program's window `width` x `height`, as a window manager does when the user
+    /// drags its edge, and waits until the X server has (the window is then black: X keeps
+    /// nothing of a resized window's pixels).
+    pub fn resize(&self, width: u16, height: u16) {
+        let size = ConfigureWindowAux::new()
+            .width(u32::from(width))
+            .height(u32::from(height));
+        checked(
+            self.x.configure_window(self.window, &size),
+            "resize the program's window",
+        );
     }
 
     /// Opens a plain white window of the test's own at (x, y) on the screen, over whatever is
@@ -276,6 +331,66 @@ impl Session {
     /// The CPU time the program and the X server have used so far, in seconds.
     pub fn cpu_seconds(&self) -> (f64, f64) {
         (cpu_seconds(&self.program.0), cpu_seconds(&self.xvfb.0))
+    }
+}
+
+/// The updates of the program's window, as X's DAMAGE extension reports them.
+pub struct Updates<'a> {
+    x: &'a RustConnection,
+    damage: u32,
+}
+
+/// How often a count of the updates reads the X server's reports.
+const UPDATES_POLL: Duration = Duration::from_millis(2);
+
+impl Updates<'_> {
+    /// How many updates came in the next `time`.
+    pub fn count_during(&self, time: Duration) -> usize {
+        self.take();
+        let start = Instant::now();
+        let mut count = 0;
+        while start.elapsed() < time {
+            sleep(UPDATES_POLL);
+            count += self.take();
+        }
+        count
+    }
+
+    /// Waits for the next update, up to `timeout`: whether one came.
+    pub fn next_within(&self, timeout: Duration) -> bool {
+        self.take();
+        let start = Instant::now();
+        while start.elapsed() < timeout {
+            sleep(UPDATES_POLL);
+            if self.take() > 0 {
+                return true;
+            }
+        }
+        false
+    }
+
+    /// The frames sent since the last look. Xlib sends minifb's one XPutImage of the whole window
+    /// as bands of rows, each reported apart, so a frame is counted by its top band (row 0).
+    fn take(&self) -> usize {
+        self.x.flush().expect("the test's connection to Xvfb");
+        let mut count = 0;
+        while let Some(event) = self
+            .x
+            .poll_for_event()
+            .expect("the test's connection to Xvfb")
+        {
+            if let Event::DamageNotify(notify) = event {
+                count += usize::from(notify.area.y == 0);
+            }
+        }
+        count
+    }
+}
+
+impl Drop for Updates<'_> {
+    fn drop(&mut self) {
+        let _ = self.x.damage_destroy(self.damage);
+        let _ = self.x.flush();
     }
 }
 

@@ -87,7 +87,7 @@ fn heading(yaw: f64, pitch: f64) -> Vec3 {
 }
 
 impl Camera {
-    /// V, right and up: the slide's camera matrix [right | up | -V] turns x, y and -z into them.
+    /// V, right and up: the slide's camera matrix [right | up | -V] turns -z, x and y into them.
     fn axes(&self) -> (Vec3, Vec3, Vec3) {
         (
             heading(self.yaw, self.pitch),
@@ -434,7 +434,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
     }
 }
 
-// Step 7, the controls: each step reads the keys and moves the camera, rendering only what changed.
+// Step 7, the controls: a step reads the keys and moves the camera; a new pose or size is rendered.
 const MOVE_SPEED: f64 = 2.0; // units a second along each held key's direction
 const TURN_SPEED: f64 = 1.5; // radians a second
 
@@ -478,7 +478,7 @@ fn main() {
     let mut camera = Camera::default();
     let mut frame = vec![BACKGROUND; WIDTH * VIEW];
     let mut rendered = None; // the camera and window size `frame` is drawn for, none at first
-    let mut steps_at_rest = 0; // re-sent, the frame shows again in a window uncovered
+    let mut steps_at_rest = 0; // since a render; minifb never repaints an uncovered window: re-send
     let mut stale = Vec::new(); // keys held when the focus left: ignored until let go
     let mut last_step = Instant::now(); // the camera moves by speed × each step's time
     while window.is_open() && !window.is_key_down(Key::Escape) {
@@ -489,8 +489,8 @@ fn main() {
             render(&scene, &camera, &mut frame);
             rendered = Some((camera, window.get_size())); // a resized window is black: redraw it
             steps_at_rest = 0;
-            let Vec3 { x, y, z } = camera.position; // the pose, as the frame command takes it:
-            let Camera { yaw, pitch, .. } = camera; // saved with it, a frame is what the user sees
+            let Vec3 { x, y, z } = camera.position; // the pose in the title, for the frame command
+            let Camera { yaw, pitch, .. } = camera;
             window.set_title(&format!(
                 "raytracer - pose {x:.2} {y:.2} {z:.2} {yaw:.2} {pitch:.2}"
             ));

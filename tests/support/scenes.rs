@@ -134,7 +134,8 @@ pub fn holds(figures: &[&str]) -> String {
     };
     format!(
         "This test holds src/main.rs to the README's {listed}: if you changed one on purpose, \
-         change it in tests/support/scenes.rs too; if not, the tracer is wrong here."
+         change it in tests/support/scenes.rs too. If not, the tracer is wrong here; if many \
+         tests fail at once, look first at what they share, main.rs's vector maths (Vec3)."
     )
 }
 

@@ -135,7 +135,7 @@ impl Primitive {
             Primitive::Sphere { center, radius } => {
                 let c = center - ray.origin;
                 let t = c.dot(ray.direction);
-                let p2 = c.dot(c) - t * t; // q.q by Pythagoras: |c| the hypotenuse, t, |q| the legs
+                let p2 = c.dot(c) - t * t; // q.q, as |c|² = t² + |q|² (Pythagoras; D is unit)
                 if p2 > radius * radius {
                     return None;
                 }

@@ -110,11 +110,10 @@ impl Camera {
     }
 }
 
-// Step 3, the slide's Primitive class with its Sphere and Plane subclasses: in Rust an enum, a
-// variant for each subclass. The sphere is (p - C).(p - C) = r², the plane p.N + d = 0.
+// Step 3, the slide's Primitive class and its subclasses Sphere and Plane: an enum and its variants.
 enum Primitive {
-    Sphere { center: Vec3, radius: f64 },
-    Plane { normal: Vec3, offset: f64 }, // N normalized, d = offset
+    Sphere { center: Vec3, radius: f64 }, // (p - C).(p - C) = r²
+    Plane { normal: Vec3, offset: f64 },  // p.N + d = 0, N normalized, d = offset
 }
 
 impl Primitive {
@@ -160,9 +159,9 @@ struct Scene {
     sky: Vec3,
 }
 
-impl Default for Scene {
+impl Scene {
     /// The demo: four balls (centre, radius, colour, reflectivity) on a checkered floor, one light.
-    fn default() -> Scene {
+    fn demo() -> Scene {
         let white = vec3(0.9, 0.9, 0.9);
         let balls = [
             (vec3(0.3, 0.0, -4.5), 1.0, white, 0.85), // a mirror
@@ -229,7 +228,7 @@ impl Scene {
         for (primitive, material) in &self.objects {
             if let Some(t) = primitive.intersect(ray) {
                 ray.t = t;
-                nearest = Some((primitive, material));
+                nearest = Some((primitive, *material));
             }
         }
         let (primitive, material) = nearest?;
@@ -244,7 +243,7 @@ impl Scene {
         Some(Hit {
             point,
             normal,
-            material: *material,
+            material,
         })
     }
 
@@ -309,7 +308,6 @@ const MAP_SCALE: f64 = VIEW as f64 / MAP_SIDE; // map pixels per world unit
 const SAMPLED_EVERY: usize = 10; // the assignment's "every 10th ray"
 const DOT_RADIUS: i32 = 1; // a hit's dot is 3 x 3 map pixels: 1 either side of its point
 const MARKER_RADIUS: i32 = 3; // the light and the eye are 7 x 7
-const OUTLINE_CHORDS: usize = 256; // a circle is drawn as 256 short straight chords
 // Colours no two alike, also to red-green colour-blind eyes, the most important the brightest.
 const BACKGROUND: u32 = 0x000000; // black
 const CAMERA_COLOR: u32 = 0xff20c0; // pink: the eye and the screen's middle row
@@ -386,15 +384,12 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
                     continue;
                 }
                 let circle_radius = (radius * radius - height * height).sqrt();
-                let around = |i: usize| {
-                    let angle = TAU * i as f64 / OUTLINE_CHORDS as f64;
-                    center - up * height
-                        + (right * angle.cos() + forward * angle.sin()) * circle_radius
-                };
-                for i in 0..OUTLINE_CHORDS {
-                    let chord = around(i + 1) - around(i);
-                    let chord_ray = Ray::new(around(i), chord, chord.length());
-                    draw_ray(frame, &chord_ray, 0.0, to_rgb(material.color));
+                let dots = (TAU * circle_radius * MAP_SCALE).ceil() as usize; // one every map pixel
+                for dot in 0..dots {
+                    let angle = TAU * dot as f64 / dots as f64;
+                    let on_circle = center - up * height
+                        + (right * angle.cos() + forward * angle.sin()) * circle_radius;
+                    plot(frame, on_circle, 0, to_rgb(material.color));
                 }
             }
             Primitive::Plane { .. } => {} // not drawn: its line would bury the rays' dots on it
@@ -451,8 +446,8 @@ fn moved(mut camera: Camera, keys: &[Key], dt: f64) -> Camera {
         + vec3(0.0, axis(Key::R, Key::F), 0.0);
     camera.position = camera.position + motion * MOVE_SPEED * dt;
     camera.yaw += TURN_SPEED * dt * axis(Key::Left, Key::Right);
-    camera.pitch += TURN_SPEED * dt * axis(Key::Up, Key::Down);
-    camera.pitch = camera.pitch.clamp(-FRAC_PI_2, FRAC_PI_2); // straight up or down at most
+    let tilted = camera.pitch + TURN_SPEED * dt * axis(Key::Up, Key::Down);
+    camera.pitch = tilted.clamp(-FRAC_PI_2, FRAC_PI_2); // straight up or down at most
     camera
 }
 
@@ -467,14 +462,12 @@ fn main() {
     };
     let mut window = Window::new("raytracer", WIDTH, VIEW, options).unwrap_or_else(|error| {
         // No window, most often for want of an X server: one line on why, and exit status 1.
-        match std::env::var_os("DISPLAY") {
-            None => eprintln!("raytracer: {error}, as DISPLAY is not set"),
-            _ => eprintln!("raytracer: {error}"),
-        }
+        let display = std::env::var("DISPLAY").unwrap_or_default();
+        eprintln!("raytracer: {error}; DISPLAY is {display:?} (empty if not set); with no display, `cargo run --example frame` saves the frame as a PNG");
         std::process::exit(1)
     });
     window.set_target_fps(STEPS_PER_SECOND);
-    let scene = Scene::default();
+    let scene = Scene::demo();
     let mut camera = Camera::default();
     let mut frame = vec![BACKGROUND; WIDTH * VIEW];
     let mut rendered = None; // the camera and window size `frame` is drawn for, none at first
@@ -485,15 +478,21 @@ fn main() {
         let keys = keys_down(&window, &mut stale);
         camera = moved(camera, &keys, last_step.elapsed().as_secs_f64());
         last_step = Instant::now();
-        if rendered != Some((camera, window.get_size())) {
-            render(&scene, &camera, &mut frame);
-            rendered = Some((camera, window.get_size())); // a resized window is black: redraw it
+        // The title's pose, to 3 decimals, yaw within a turn: the frame command saves this frame.
+        let Vec3 { x, y, z } = camera.position;
+        let [x, y, z, yaw, pitch] =
+            [x, y, z, camera.yaw % TAU, camera.pitch].map(|value| (value * 1e3).round() / 1e3);
+        let shown = Camera {
+            position: vec3(x, y, z),
+            yaw,
+            pitch,
+        };
+        let now = Some((shown, window.get_size())); // a resized window is black: redraw it
+        if rendered != now {
+            render(&scene, &shown, &mut frame);
+            rendered = now;
             steps_at_rest = 0;
-            let Vec3 { x, y, z } = camera.position; // the pose in the title, for the frame command
-            let Camera { yaw, pitch, .. } = camera;
-            window.set_title(&format!(
-                "raytracer - pose {x:.2} {y:.2} {z:.2} {yaw:.2} {pitch:.2}"
-            ));
+            window.set_title(&format!("raytracer - pose {x} {y} {z} {yaw} {pitch}"));
         }
         if steps_at_rest % RESEND_EVERY == 0 {
             let sent = window.update_with_buffer(&frame, WIDTH, VIEW);

@@ -1,6 +1,6 @@
 //! Machinery a student need not read: a small pseudo-random generator (xorshift64*, Vigna 2016)
 //! for the tests that try many poses and rays, seeded so that a failure can be replayed.
-use crate::scenes::{V3, v3};
+use glam::{DVec3, dvec3};
 
 pub struct Random {
     state: u64,
@@ -32,8 +32,8 @@ impl Random {
         items[(self.next() * items.len() as f64) as usize]
     }
     /// A point in the cube from -size to size on each axis.
-    pub fn point(&mut self, size: f64) -> V3 {
-        v3(
+    pub fn point(&mut self, size: f64) -> DVec3 {
+        dvec3(
             self.between(-size, size),
             self.between(-size, size),
             self.between(-size, size),

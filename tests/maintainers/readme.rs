@@ -2,43 +2,69 @@
 //! demo balls' colours, the window's size wherever it gives it, and the size of `src/main.rs`.
 //! These do not ask whether the tracer is right (the other tests do), but whether the README still
 //! tells the truth: a student's own scene makes them fail, and that is fine. They are ignored by
-//! `cargo test`; CI runs them with `cargo test --no-fail-fast -- --include-ignored`. Each names
-//! every stale claim it finds at once, and how to bring it back.
+//! `cargo test`; CI runs them with `cargo test --workspace --no-fail-fast -- --include-ignored`.
+//! Each names every stale claim it finds at once, and how to bring it back.
 #![allow(dead_code)] // each test file uses only part of the program
-include!("../src/main.rs"); // the program itself: its items in reach with no `pub`
+include!("../../src/main.rs"); // the program itself: its items in reach with no `pub`
 #[path = "support/picture.rs"]
 mod picture;
-#[path = "support/scenes.rs"]
-mod scenes;
 #[path = "support/tokens.rs"]
 mod tokens;
 #[path = "support/vision.rs"]
 mod vision;
 
-use scenes::{LEGEND, map_of};
 use std::fs;
 
-/// The README's two pictures: the demo from the start pose, and from it looking 0.15 radians down.
+/// The README's two pictures, by their paths from the repository's top: the demo from the start
+/// pose, and from it looking 0.15 radians down.
 fn readme_pictures() -> [(&'static str, Camera); 2] {
     let pitched = Camera {
         pitch: -0.15,
         ..Camera::default()
     };
     [
-        ("tests/default_frame.png", Camera::default()),
-        ("tests/pitched_frame.png", pitched),
+        (
+            "tests/maintainers/pictures/default_frame.png",
+            Camera::default(),
+        ),
+        ("tests/maintainers/pictures/pitched_frame.png", pitched),
     ]
+}
+
+/// A file's path from the repository's top, two folders above this package's.
+fn at_top(path: &str) -> String {
+    format!("{}/../../{path}", env!("CARGO_MANIFEST_DIR"))
 }
 
 fn demo_frame(camera: &Camera) -> Vec<u32> {
     let mut frame = vec![0; WIDTH * VIEW];
-    render(&Scene::default(), camera, &mut frame);
+    render(&Scene::demo(), camera, &mut frame);
     frame
 }
 
 fn readme() -> String {
-    fs::read_to_string(format!("{}/README.md", env!("CARGO_MANIFEST_DIR"))).expect("README.md")
+    fs::read_to_string(at_top("README.md")).expect("README.md")
 }
+
+/// The right half of a frame: the map's pixels, row by row.
+fn map_of(frame: &[u32]) -> Vec<u32> {
+    frame
+        .chunks(WIDTH)
+        .flat_map(|row| row[VIEW..].to_vec())
+        .collect()
+}
+
+/// The legend's colours by name, as the README's table and the failure messages call them.
+const LEGEND: [(&str, u32); 8] = [
+    ("BACKGROUND", BACKGROUND),
+    ("CAMERA_COLOR", CAMERA_COLOR),
+    ("RAY_COLOR", RAY_COLOR),
+    ("MISS_COLOR", MISS_COLOR),
+    ("LIGHT_COLOR", LIGHT_COLOR),
+    ("SHADOW_COLOR", SHADOW_COLOR),
+    ("BLOCKED_COLOR", BLOCKED_COLOR),
+    ("MIRROR_COLOR", MIRROR_COLOR),
+];
 
 /// Every stale claim a guard found, at once, or none.
 fn assert_none_stale(stale: &[String]) {
@@ -54,9 +80,16 @@ fn assert_none_stale(stale: &[String]) {
 #[test]
 #[ignore = "guards the README's pictures, not the tracer: run with --include-ignored"]
 fn the_readme_pictures_are_the_demos_frames() {
+    let readme = readme();
     let mut stale = Vec::new();
     for (name, camera) in readme_pictures() {
-        let path = format!("{}/{name}", env!("CARGO_MANIFEST_DIR"));
+        if !readme.contains(&format!("]({name})")) {
+            stale.push(format!(
+                "it shows no picture at {name}, where the demo's frame from its pose is \
+                 (readme_pictures, in tests/maintainers/readme.rs): show it with ![...]({name})"
+            ));
+        }
+        let path = at_top(name);
         let frame = demo_frame(&camera);
         if std::env::var_os("UPDATE_PICTURE").is_some() {
             picture::write_png(&path, &frame, WIDTH).unwrap_or_else(|error| panic!("{error}"));
@@ -94,7 +127,8 @@ fn the_readme_pictures_are_the_demos_frames() {
 
 /// How to bring a stale picture up to date.
 const UPDATE: &str = "If the change is meant, write the pictures anew with `UPDATE_PICTURE=1 cargo \
-                      test --test readme -- --ignored` and look at them before committing them.";
+                      test -p maintainers --test readme -- --ignored` and look at them before \
+                      committing them.";
 
 /// Each size "WxH" written in a text, as its two numbers.
 fn sizes_in(text: &str) -> Vec<(usize, usize)> {
@@ -163,9 +197,13 @@ fn each_readme_line_that_gives_the_window_size_gives_the_programs() {
 /// The demo's balls, each by its centre, and their outlines' colours.
 fn demo_balls() -> Vec<(String, u32)> {
     let mut balls = Vec::new();
-    for (primitive, material) in Scene::default().objects {
+    for (primitive, material) in Scene::demo().objects {
         if let Primitive::Sphere { center, .. } = primitive {
-            balls.push((format!("the ball at {center:?}"), outline(material.color)));
+            let Vec3 { x, y, z } = center;
+            balls.push((
+                format!("the ball at ({x}, {y}, {z})"),
+                outline(material.color),
+            ));
         }
     }
     balls
@@ -190,9 +228,10 @@ fn every_legend_colour_and_ball_shows_from_the_readme_pictures_poses() {
         if !shown.contains(&color) {
             stale.push(format!(
                 "it says its two pictures show every colour of the legend, but neither shows \
-                 {name} ({color:06x}): from those two poses (readme_pictures, in tests/readme.rs) \
-                 the demo, Scene::default, no longer draws it. Change the demo so that it does, \
-                 or choose other poses there and in the README and write the pictures anew."
+                 {name} ({color:06x}): from those two poses (readme_pictures, in \
+                 tests/maintainers/readme.rs) the demo, Scene::demo, no longer draws it. Change \
+                 the demo so that it does, or choose other poses there and in the README and \
+                 write the pictures anew."
             ));
         }
     }
@@ -200,7 +239,7 @@ fn every_legend_colour_and_ball_shows_from_the_readme_pictures_poses() {
         if !shown.contains(&color) {
             stale.push(format!(
                 "it says its pictures show each ball's outline, but neither shows that of {ball} \
-                 in Scene::default ({color:06x}): the pictures' planes (y = 0, and y = 0 tilted \
+                 in Scene::demo ({color:06x}): the pictures' planes (y = 0, and y = 0 tilted \
                  0.15 radians down) miss it. Move the ball so that they cut it, or change the \
                  README."
             ));
@@ -256,7 +295,7 @@ fn the_demo_balls_outlines_are_told_apart_from_the_legend_by_every_eye() {
         };
         stale.push(format!(
             "it says each ball's outline is told apart from every colour of the legend, by every \
-             eye, but {ball} in Scene::default is too alike to {}. Give it {suggestion}, or \
+             eye, but {ball} in Scene::demo is too alike to {}. Give it {suggestion}, or \
              change the README.",
             alike.join("; to ")
         ));
@@ -299,8 +338,7 @@ fn with_comma(n: usize) -> String {
 #[test]
 #[ignore = "guards the README's size claim: run with --include-ignored"]
 fn the_readme_states_the_size_of_main_rs_within_its_budget() {
-    let root = env!("CARGO_MANIFEST_DIR");
-    let source = fs::read_to_string(format!("{root}/src/main.rs")).expect("src/main.rs");
+    let source = fs::read_to_string(at_top("src/main.rs")).expect("src/main.rs");
     let readme = readme();
     let token_count = tokens::count_tokens(&tokens::strip_comments(&source));
     let lines = tokens::non_blank_lines(&source);
@@ -312,7 +350,7 @@ fn the_readme_states_the_size_of_main_rs_within_its_budget() {
     );
     if !readme.contains(&budget) {
         stale.push(format!(
-            "it should say \"{budget}\", the budget that tests/readme.rs (MOST_TOKENS, \
+            "it should say \"{budget}\", the budget that tests/maintainers/readme.rs (MOST_TOKENS, \
              MOST_LINES) holds src/main.rs to: bring the two together"
         ));
     }
@@ -325,7 +363,7 @@ fn the_readme_states_the_size_of_main_rs_within_its_budget() {
             stale.push(format!(
                 "src/main.rs has {} {what}, over the budget of {}: make the code \
                  smaller (remove, never pack), or change the budget in the README and in \
-                 tests/readme.rs (MOST_TOKENS, MOST_LINES)",
+                 tests/maintainers/readme.rs (MOST_TOKENS, MOST_LINES)",
                 with_comma(counted),
                 with_comma(most)
             ));
@@ -347,7 +385,7 @@ fn the_readme_states_the_size_of_main_rs_within_its_budget() {
 #[test]
 #[ignore = "checks the size guard's counter: run with --include-ignored"]
 fn the_token_counter_counts_as_the_rules_say() {
-    // Counted by hand by the rules in tests/support/tokens.rs.
+    // Counted by hand by the rules in support/tokens.rs.
     let cases = [
         // let x = a :: b ( 1.5e-3 , 'c' , "s\"t" ) ;
         ("let x = a::b(1.5e-3, 'c', \"s\\\"t\"); // gone", 14),

@@ -1,4 +1,4 @@
-//! What tests/window.rs needs to run the built program in a real X server and look at it: a
+//! What window.rs needs to run the built program in a real X server and look at it: a
 //! private Xvfb, the program on it, xdotool for the keys, and x11rb for screenshots, the window's
 //! title, size hints and size, windows of the test's own, a window manager's close request, and
 //! X's DAMAGE extension to count the frames the program sends. Everything the test starts is
@@ -80,9 +80,10 @@ pub struct Session {
 }
 
 impl Session {
-    /// Starts Xvfb on a free display (1280x1024, 24 bits), the built program on it, and waits
-    /// until the program's window is on the screen with the focus.
+    /// Starts Xvfb on a free display (1280x1024, 24 bits), the built program on it (built first,
+    /// see built.rs), and waits until the program's window is on the screen with the focus.
     pub fn start() -> Session {
+        let raytracer = &crate::built::built().raytracer;
         let lock = ONE_AT_A_TIME
             .lock()
             .unwrap_or_else(|poisoned| poisoned.into_inner());
@@ -110,7 +111,7 @@ impl Session {
             panic!("the test could not connect to Xvfb at {display}: {error}")
         });
         let root = x.setup().roots[screen].root;
-        let program = Command::new(env!("CARGO_BIN_EXE_raytracer"))
+        let program = Command::new(raytracer)
             .env("DISPLAY", &display)
             .env_remove("WAYLAND_DISPLAY")
             .spawn()

@@ -27,7 +27,7 @@ mod program {
     pub fn default_frame_seconds() -> f64 {
         let mut frame = vec![0; WIDTH * VIEW];
         let start = Instant::now();
-        render(&Scene::default(), &Camera::default(), &mut frame);
+        render(&Scene::demo(), &Camera::default(), &mut frame);
         start.elapsed().as_secs_f64()
     }
 }

@@ -1,0 +1,17 @@
+// The assignment's checklist: `cargo test stepN` runs step N's tests, `cargo test slice` the 2D
+// slice's. Each file holds one step's tests; support.rs what they share.
+#![allow(dead_code)] // the tests use only part of the program
+include!("../../src/main.rs"); // the program itself: its items in reach with no `pub`
+
+include!("support.rs"); // what the steps' tests share
+
+mod slice;
+mod step1;
+mod step2;
+mod step3;
+mod step4;
+mod step5;
+mod step6;
+mod step7;
+mod step8;
+mod step9;

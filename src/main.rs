@@ -384,7 +384,7 @@ fn draw_slice(scene: &Scene, camera: &Camera, frame: &mut [u32]) {
                     continue;
                 }
                 let circle_radius = (radius * radius - height * height).sqrt();
-                let dots = (TAU * circle_radius * MAP_SCALE).ceil() as usize; // one every map pixel
+                let dots = (TAU * circle_radius * MAP_SCALE).ceil() as usize; // a dot a map pixel
                 for dot in 0..dots {
                     let angle = TAU * dot as f64 / dots as f64;
                     let on_circle = center - up * height
@@ -470,7 +470,7 @@ fn main() {
     let scene = Scene::demo();
     let mut camera = Camera::default();
     let mut frame = vec![BACKGROUND; WIDTH * VIEW];
-    let mut rendered = None; // the camera and window size `frame` is drawn for, none at first
+    let mut rendered = None; // the pose shown and window size `frame` is drawn for, none at first
     let mut steps_at_rest = 0; // since a render; minifb never repaints an uncovered window: re-send
     let mut stale = Vec::new(); // keys held when the focus left: ignored until let go
     let mut last_step = Instant::now(); // the camera moves by speed × each step's time

@@ -4,7 +4,7 @@
 use super::*;
 
 /// The direction of the sampled ray nearest the middle, through column 250, from the start.
-fn beside_middle() -> DVec3 {
+fn near_middle() -> DVec3 {
     sampled(Camera::default())[VIEW / 2 / README_SAMPLED_EVERY]
 }
 
@@ -35,11 +35,11 @@ fn from_off_the_map_the_eye_stands_on_its_edge_and_its_rays_cross_it() {
         0.0,
         MAP_CORNER.z + (VIEW - 1 - README_MARKER_RADIUS) as f64 / MAP_SCALE,
     );
-    let on_map = eye + beside_middle() * 28.0 / -beside_middle().z; // at z = 2
+    let on_map = eye + near_middle() * 28.0 / -near_middle().z; // at z = 2
     assert!(
         map_near(&frame, edge, README_MARKER_RADIUS) == [CAMERA_COLOR; 49]
             && drawn_near(&frame, on_map, RAY_COLOR),
-        "from 30 behind the map, the eye's square should stand on its bottom edge around {edge}, and the sampled ray beside the middle cross it at {on_map}: look at `fit` in draw_slice and at draw_ray."
+        "from 30 behind the map, the eye's square should stand on its bottom edge around {edge}, and the sampled ray nearest the middle cross it at {on_map}: look at `fit` in draw_slice and at draw_ray."
     );
 }
 
@@ -83,9 +83,9 @@ fn a_tilted_plane_outlines_the_balls_it_cuts_and_no_other() {
 
 #[test]
 fn a_sampled_ray_runs_from_the_screen_to_its_hit_and_ends_in_a_dot() {
-    // A matte ball of radius 1 dead ahead on the sampled ray beside the middle, 5 out: the ray is drawn
-    // up to its hit, 4 out, ends there in a dot 3 pixels wide, and nothing goes on from it.
-    let d = beside_middle();
+    // A matte ball of radius 1 dead ahead on the sampled ray nearest the middle, 5 out: the ray is
+    // drawn up to its hit, 4 out, ends there in a dot 3 pixels wide, and nothing goes on from it.
+    let d = near_middle();
     let frame = frame(
         vec![ball(d * 5.0, 1.0, RED, 0.0)],
         9.0 * UP,
@@ -96,15 +96,15 @@ fn a_sampled_ray_runs_from_the_screen_to_its_hit_and_ends_in_a_dot() {
         map_near(&frame, d * 4.0, 1) == [RAY_COLOR; 9]
             && drawn == [true, false]
             && !frame.contains(&MIRROR_COLOR),
-        "the sampled ray beside the middle should be drawn up to the matte ball it meets 4 out, along {d}, end there in a dot 3 pixels wide, and nothing go on: look at follow and draw_ray."
+        "the sampled ray nearest the middle should be drawn up to the matte ball it meets 4 out, along {d}, end there in a dot 3 pixels wide, and nothing go on: look at follow and draw_ray."
     );
 }
 
 #[test]
-fn every_10th_ray_is_drawn_from_the_screen_in_sky_blue_past_the_floor_and_nothing_between() {
-    // The floor below: the sampled rays of the level camera never meet it. 6 out, they are 5 to 9
-    // pixels apart; between them the map is black, as draw_slice clears it each frame. The first,
-    // along about (-1, 0, -1), starts at the screen, √2 out.
+fn every_10th_ray_is_drawn_from_the_screen_on_and_nothing_between() {
+    // A level camera over the floor: its sampled rays never come down to it, so are all sky blue.
+    // 6 out, they are 5 to 9 pixels apart; between them the map is black, as draw_slice clears it
+    // each frame. The first, along about (-1, 0, -1), starts at the screen, √2 out.
     let frame = frame(vec![floor()], UP, Camera::default());
     let rays = sampled(Camera::default());
     for pair in rays[rays.len() / 4..rays.len() * 3 / 4].windows(2) {
@@ -125,10 +125,10 @@ fn every_10th_ray_is_drawn_from_the_screen_in_sky_blue_past_the_floor_and_nothin
 fn a_shadow_ray_runs_to_the_light_or_to_what_blocks_it() {
     // A ball 6 out on the sampled ray nearest the middle, the light 6 to the left of the hit: the
     // shadow ray runs to the light (rust), or, with a ball halfway, to that ball (violet).
-    let hit = beside_middle() * 5.0;
+    let hit = near_middle() * 5.0;
     for (blocker, color) in [(0.0, SHADOW_COLOR), (0.5, BLOCKED_COLOR)] {
         let balls = vec![
-            ball(beside_middle() * 6.0, 1.0, RED, 0.0),
+            ball(near_middle() * 6.0, 1.0, RED, 0.0),
             ball(hit - 3.0 * RIGHT, blocker, RED, 0.0),
         ];
         let frame = frame(balls, hit - 6.0 * RIGHT, Camera::default());
@@ -142,10 +142,10 @@ fn a_shadow_ray_runs_to_the_light_or_to_what_blocks_it() {
 
 #[test]
 fn a_mirror_ray_leaves_a_mirror_along_r() {
-    // A mirror ball 5 out, its centre 0.25 right of the sampled ray beside the middle: the ray meets it on
-    // its left, and R = D - 2(D.N)N sends it back across z = 0.3, behind the eye, where nothing
-    // else is drawn.
-    let d = beside_middle();
+    // A mirror ball 5 out, its centre 0.25 right of the sampled ray nearest the middle: the ray
+    // meets it on its left, and R = D - 2(D.N)N sends it back across z = 0.3, behind the eye,
+    // where nothing else is drawn.
+    let d = near_middle();
     let center = d * 5.0 + 0.25 * RIGHT;
     let frame = frame(
         vec![ball(center, 1.0, WHITE, 0.9)],
@@ -163,9 +163,9 @@ fn a_mirror_ray_leaves_a_mirror_along_r() {
 
 #[test]
 fn the_sampled_rays_are_drawn_over_the_shadow_and_mirror_rays() {
-    // A mirror ball dead ahead on the sampled ray beside the middle, the light behind the eye on it:
-    // that ray's mirror and shadow rays go straight back along it. It shows on top.
-    let d = beside_middle();
+    // A mirror ball dead ahead on the sampled ray nearest the middle, the light behind the eye on
+    // it: that ray's mirror and shadow rays go straight back along it. It shows on top.
+    let d = near_middle();
     let frame = frame(
         vec![ball(d * 5.0, 1.0, WHITE, 0.9)],
         d * -2.0,
@@ -173,6 +173,6 @@ fn the_sampled_rays_are_drawn_over_the_shadow_and_mirror_rays() {
     );
     assert!(
         map_near(&frame, d * 2.5, 0) == [RAY_COLOR],
-        "the sampled ray beside the middle should show on top of the mirror and shadow rays that go back along it: look at the order in which draw_slice draws."
+        "the sampled ray nearest the middle should show on top of the mirror and shadow rays that go back along it: look at the order in which draw_slice draws."
     );
 }

@@ -1,40 +1,40 @@
-//! Step 8: a checkerboard on the floor: F = ((int)(2 λ1) + (int)λ2) & 1, unit squares here.
+//! Step 8: a checkerboard on the floor: F = ((int)(2 λ1) + (int)λ2) & 1, λ1 = x and λ2 = z. Here
+//! with no 2, for unit squares, and floor for (int), which would merge the squares beside 0.
 use super::*;
 
 #[test]
 fn a_floor_square_is_odd_where_floor_x_plus_floor_z_is_odd() {
-    // Squares either side of x = 0 and z = 0, and out at the horizon.
-    for (x, z) in [
-        (0.5, 0.5),
-        (-0.5, 0.5),
-        (-0.5, -0.5),
-        (1.5, -2.5),
-        (3e9, 0.5),
-        (-3e11, 0.5),
-    ] {
-        let odd = (f64::floor(x) + f64::floor(z)).rem_euclid(2.0) == 1.0;
+    // Squares either side of x = 0 and z = 0, and out at the horizon, past an i32's range: the
+    // sum of the floors, and whether it is odd.
+    let squares = [
+        ((0.5, 0.5), false),
+        ((-0.5, 0.5), true),
+        ((-0.5, -0.5), false),
+        ((1.5, -1.5), true),
+        ((3e9, 0.5), false),
+        ((-3e11 - 0.5, 0.5), true),
+    ];
+    for ((x, z), odd) in squares {
+        let seen = odd_square(vec3(x, -1.0, z));
         assert!(
-            odd_square(vec3(x, -1.0, z)) == odd,
-            "the floor square at x = {x}, z = {z} is odd: {odd}. Look at odd_square."
+            seen == odd,
+            "the floor square at x = {x}, z = {z} is odd: {odd}, yet odd_square says {seen}: look at odd_square (unit squares, and floor, not truncation, which merges the squares beside 0)."
         );
     }
 }
 
 #[test]
 fn odd_squares_of_a_checkered_floor_show_a_quarter_of_the_light() {
-    // Lit from far straight above (N.L = 1), the odd square at x = 0.5, z = -0.5 shows a quarter
-    // of white on a checkered floor, and all of it on a plain one.
-    let camera = camera(dvec3(0.0, 1.0, 3.0), 0.0, -0.5);
-    let pixel = pixel_of(camera, dvec3(0.5, -1.0, -0.5));
-    for (checkered, share) in [(true, README_ODD_SQUARE_BRIGHTNESS), (false, 1.0)] {
+    // Looking straight down at the odd square x = 0.5, z = -0.5 (0 + -1 is odd), lit from high
+    // above: a checkered floor shows a quarter of the light a plain one shows there.
+    let camera = camera_at(dvec3(0.5, 2.0, -0.5), 0.0, -FRAC_PI_2);
+    let [checkered, plain] = [true, false].map(|checkered| {
         let floor = object(floor_plane(), WHITE, 0.0, checkered);
-        let (green, expected) = (
-            rgb(&frame(vec![floor], 1e6 * UP, camera), pixel)[1],
-            bytes(WHITE * share)[1],
-        );
-        assert!(
-            green.abs_diff(expected) <= 1,
-            "the odd square at x = 0.5, z = -0.5 of a floor, checkered: {checkered}, should show green {expected}, not {green}: look at where Scene::trace uses odd_square."
-        );
-    }
+        rgb(&rendered(vec![floor], 1e6 * UP, camera), MIDDLE)[1]
+    });
+    let expected = f64::from(plain) * README_ODD_SQUARE_BRIGHTNESS;
+    assert!(
+        (f64::from(checkered) - expected).abs() <= 1.0 && plain > 200,
+        "on the odd square, the checkered floor should show green {expected}, a quarter of the plain floor's {plain}, not {checkered}: look at where Scene::trace uses odd_square."
+    );
 }

@@ -2,7 +2,7 @@
 // view and on the map. The tests work out what they expect with glam's vector maths, not with
 // main.rs's `Vec3`: a slip there fails the tests, rather than moving what they expect too.
 use glam::{DMat3, DVec3, dvec3};
-use std::sync::mpsc;
+use std::sync::mpsc::{self, RecvTimeoutError};
 use std::time::Duration;
 
 /// A test's point handed to main.rs, and main.rs's read back, field by field.
@@ -22,11 +22,14 @@ const README_MAX_DEPTH: u32 = 5; // mirror bounces
 const README_SCREEN_DISTANCE: f64 = 1.0; // the screen 1 ahead of the eye, 2 wide and 2 high
 const README_SAMPLED_EVERY: usize = 10;
 const README_MARKER_RADIUS: usize = 3; // markers 7 map pixels wide
+const README_MAP_CORNER: DVec3 = dvec3(-6.4, 0.0, -9.4); // the map's top left x and z
+const README_MAP_SIDE: f64 = 12.8; // the map's width and height, in world units
 const README_MOVE_SPEED: f64 = 2.0; // units a second
 const README_TURN_SPEED: f64 = 1.5; // radians a second
 
 const SKY: DVec3 = dvec3(0.4, 0.6, 1.0);
 const RED: DVec3 = dvec3(1.0, 0.0, 0.0);
+const RED_ON_THE_MAP: u32 = 0xff0000; // RED as the window shows it
 const WHITE: DVec3 = DVec3::ONE;
 const ORIGIN: DVec3 = DVec3::ZERO;
 const UP: DVec3 = DVec3::Y;
@@ -37,83 +40,54 @@ const MIDDLE: (usize, usize) = (VIEW / 2, VIEW / 2); // the 3D view's middle pix
 /// A primitive of a colour, of a reflectivity from 0 (matte) to 1 (a perfect mirror), checkered
 /// or not. Any field you add to Material comes from the demo's floor.
 #[allow(clippy::needless_update)]
-fn object(
-    primitive: Primitive,
-    color: DVec3,
-    reflectivity: f64,
-    checkered: bool,
-) -> (Primitive, Material) {
+fn object(primitive: Primitive, color: DVec3, reflectivity: f64, checkered: bool) -> (Primitive, Material) {
     let color = to_vec3(color);
-    (
-        primitive,
-        Material {
-            color,
-            reflectivity,
-            checkered,
-            ..Scene::demo().objects[0].1
-        },
-    )
+    (primitive, Material { color, reflectivity, checkered, ..Scene::demo().objects[0].1 })
 }
 
 fn ball(center: DVec3, radius: f64, color: DVec3, reflectivity: f64) -> (Primitive, Material) {
     let center = to_vec3(center);
-    object(
-        Primitive::Sphere { center, radius },
-        color,
-        reflectivity,
-        false,
-    )
+    object(Primitive::Sphere { center, radius }, color, reflectivity, false)
 }
 
 /// The plane p.N + d = 0 with N = (0, 1, 0) and d = 1: y = -1, the floor.
 fn floor_plane() -> Primitive {
     let normal = vec3(0.0, 1.0, 0.0);
-    Primitive::Plane {
-        normal,
-        offset: 1.0,
-    }
+    Primitive::Plane { normal, offset: 1.0 }
 }
 
-/// A white checkered floor.
-fn floor() -> (Primitive, Material) {
+fn checkered_floor() -> (Primitive, Material) {
     object(floor_plane(), WHITE, 0.0, true)
 }
 
 #[allow(clippy::needless_update)]
 fn scene(objects: Vec<(Primitive, Material)>, light: DVec3) -> Scene {
-    let (light, sky) = (to_vec3(light), to_vec3(SKY));
-    Scene {
-        objects,
-        light,
-        sky,
-        ..Scene::demo()
-    }
+    let light = to_vec3(light);
+    Scene { objects, light, sky: to_vec3(SKY), ..Scene::demo() }
 }
 
 /// The eye at `position`, turned `yaw` radians left and tilted `pitch` up.
 #[allow(clippy::needless_update)]
-fn camera(position: DVec3, yaw: f64, pitch: f64) -> Camera {
+fn camera_at(position: DVec3, yaw: f64, pitch: f64) -> Camera {
     let position = to_vec3(position);
-    Camera {
-        position,
-        yaw,
-        pitch,
-        ..Camera::default()
-    }
+    Camera { position, yaw, pitch, ..Camera::default() }
 }
 
 /// The frame `render` draws, in a buffer that held another frame (white), as a window's does. One
 /// not done in 5 s (it takes a tenth of one) fails the test, rather than hang it.
-fn frame(objects: Vec<(Primitive, Material)>, light: DVec3, camera: Camera) -> Vec<u32> {
+fn rendered(objects: Vec<(Primitive, Material)>, light: DVec3, camera: Camera) -> Vec<u32> {
     let scene = scene(objects, light);
-    let (done, frame) = mpsc::channel();
+    let (sender, receiver) = mpsc::channel();
     std::thread::spawn(move || {
-        let mut frame = vec![0xffffff; WIDTH * VIEW];
-        render(&scene, &camera, &mut frame);
-        done.send(frame)
+        let mut pixels = vec![0xffffff; WIDTH * VIEW];
+        render(&scene, &camera, &mut pixels);
+        sender.send(pixels)
     });
-    let waited = frame.recv_timeout(Duration::from_secs(5));
-    waited.expect("render has not finished a frame in 5 s: look in src/main.rs for a loop that never ends (draw_ray's count of dots, after a slip in the vector maths)")
+    match receiver.recv_timeout(Duration::from_secs(5)) {
+        Ok(pixels) => pixels,
+        Err(RecvTimeoutError::Timeout) => panic!("render has not finished a frame in 5 s: look in src/main.rs for a loop that never ends (draw_ray's count of dots, after a slip in the vector maths)"),
+        Err(RecvTimeoutError::Disconnected) => panic!("render panicked: see the message above"),
+    }
 }
 
 /// The 3D view's pixel (x, y) as red, green and blue bytes.
@@ -134,7 +108,7 @@ fn is_red([red, green, blue]: [u8; 3]) -> bool {
 
 /// The camera matrix: turned `yaw` about y, after tilted `pitch` about x. It turns -z, x and y into
 /// the camera's view, right and up.
-fn turn(camera: Camera) -> DMat3 {
+fn camera_matrix(camera: Camera) -> DMat3 {
     DMat3::from_rotation_y(camera.yaw) * DMat3::from_rotation_x(camera.pitch)
 }
 
@@ -142,30 +116,29 @@ fn turn(camera: Camera) -> DMat3 {
 /// on the slide's screen, d ahead, from -1 to 1 across and up.
 fn through(camera: Camera, x: f64, y: f64) -> DVec3 {
     let half = VIEW as f64 / 2.0;
-    turn(camera) * dvec3(x / half - 1.0, 1.0 - y / half, -README_SCREEN_DISTANCE)
+    camera_matrix(camera) * dvec3(x / half - 1.0, 1.0 - y / half, -README_SCREEN_DISTANCE)
 }
 
-/// The 3D view's pixel that shows a world point ahead of the camera.
+/// The 3D view's pixel that shows a world point in view: the point in the camera's own x, y and -z
+/// (ahead), its x and y over how far ahead it is, from -1 to 1 on the screen.
 fn pixel_of(camera: Camera, point: DVec3) -> (usize, usize) {
-    let seen = turn(camera).transpose() * (point - to_dvec3(camera.position));
-    let [x, y] =
-        [seen.x, -seen.y].map(|w| (1.0 - w * README_SCREEN_DISTANCE / seen.z) * VIEW as f64 / 2.0);
-    (x as usize, y as usize)
+    let seen = camera_matrix(camera).transpose() * (point - to_dvec3(camera.position));
+    let screen = seen * (README_SCREEN_DISTANCE / -seen.z);
+    let half = VIEW as f64 / 2.0;
+    (((1.0 + screen.x) * half) as usize, ((1.0 - screen.y) * half) as usize)
 }
 
 /// The unit directions of the rays the map shows: through every 10th column's centre, on the line
 /// between the screen's two middle rows.
 fn sampled(camera: Camera) -> Vec<DVec3> {
     let columns = (0..VIEW).step_by(README_SAMPLED_EVERY);
-    columns
-        .map(|x| through(camera, x as f64 + 0.5, VIEW as f64 / 2.0).normalize())
-        .collect()
+    columns.map(|x| through(camera, x as f64 + 0.5, VIEW as f64 / 2.0).normalize()).collect()
 }
 
-/// The map's colours up to `reach` pixels either side of the pixel over a world point, which
-/// is x to the right and z down from MAP_CORNER, MAP_SCALE pixels a unit.
+/// The map's colours up to `reach` pixels either side of the pixel over a world point, at least
+/// that far inside the map: x to the right and z down from its top left corner.
 fn map_near(frame: &[u32], point: DVec3, reach: usize) -> Vec<u32> {
-    let middle = (point - to_dvec3(MAP_CORNER)) * MAP_SCALE;
+    let middle = (point - README_MAP_CORNER) * (VIEW as f64 / README_MAP_SIDE);
     let (x, z) = (middle.x as usize, middle.z as usize);
     let row = |z| (x - reach..=x + reach).map(move |x| frame[z * WIDTH + VIEW + x]);
     (z - reach..=z + reach).flat_map(row).collect()
@@ -174,4 +147,9 @@ fn map_near(frame: &[u32], point: DVec3, reach: usize) -> Vec<u32> {
 /// Is `color` drawn on the map within a pixel of a world point?
 fn drawn_near(frame: &[u32], point: DVec3, color: u32) -> bool {
     map_near(frame, point, 1).contains(&color)
+}
+
+/// Is `color` anywhere on the map?
+fn on_the_map(frame: &[u32], color: u32) -> bool {
+    frame.chunks(WIDTH).any(|row| row[VIEW..].contains(&color))
 }

@@ -46,14 +46,14 @@ fn assert_valid_rays(scene: &Scene, pose: &Camera, case: &str) {
     }
 }
 
-/// A scene's objects and its light, as support.rs's `scene` and `frame` take them.
+/// A scene's objects and its light, as support.rs's `scene` and `rendered` take them.
 type Objects = Vec<(Primitive, Material)>;
 
 /// A scene like the demo's, but the tests' own: the checkered floor, a mirror ball, three matte
 /// balls and the light up to the left.
 fn demo_like() -> (Objects, DVec3) {
     let objects = vec![
-        floor(),
+        checkered_floor(),
         ball(dvec3(0.3, 0.0, -4.5), 1.0, WHITE, 0.85),
         ball(dvec3(-2.0, -0.2, -4.2), 0.8, RED, 0.0),
         ball(dvec3(1.9, -0.4, -3.4), 0.6, dvec3(0.0, 1.0, 0.0), 0.0), // green
@@ -98,7 +98,7 @@ fn random_camera(random: &mut Random) -> Camera {
     let spread = if random.next() < 0.1 { 1e4 } else { 6.0 };
     let tilted = random.between(-FRAC_PI_2, FRAC_PI_2);
     let pitch = random.pick(&[FRAC_PI_2, -FRAC_PI_2, tilted, tilted]);
-    camera(
+    camera_at(
         random.point(spread),
         random.between(-3.0 * TAU, 3.0 * TAU),
         pitch,
@@ -139,7 +139,7 @@ fn the_demo_renders_from_any_pose_with_no_panic_and_no_nan() {
     for seed in 0..100 {
         let pose = random_camera(&mut Random::new(seed));
         if seed < 5 {
-            frame(Scene::demo().objects, to_dvec3(demo.light), pose);
+            rendered(Scene::demo().objects, to_dvec3(demo.light), pose);
         }
         for (x, y) in sample_pixels() {
             let color = demo.trace(pose.primary_ray(x as f64 + 0.5, y as f64 + 0.5), 0);
@@ -161,10 +161,10 @@ fn a_frame_is_the_same_whatever_the_buffer_held_before() {
     // A frame rendered into a buffer of white (support.rs's `frame`) and into one holding another
     // frame: render draws every pixel anew, both halves.
     let (objects, light) = demo_like();
-    let other = frame(objects, light, camera(dvec3(1.0, 0.0, 2.0), 0.5, -0.2));
+    let other = rendered(objects, light, camera_at(dvec3(1.0, 0.0, 2.0), 0.5, -0.2));
     for seed in 0..6 {
         let (objects, light, pose) = random_case(seed);
-        let on_white = frame(objects, light, pose);
+        let on_white = rendered(objects, light, pose);
         let (objects, light, pose) = random_case(seed);
         let mut on_other = other.clone();
         render(&scene(objects, light), &pose, &mut on_other);
@@ -302,7 +302,7 @@ fn odd_scenes_give_colours_from_0_to_1() {
     let huge = 1e3; // a radius a thousand times the demo's balls'
     let cases = [
         ("no objects", vec![]),
-        ("only a floor", vec![floor()]),
+        ("only a floor", vec![checkered_floor()]),
         (
             "a huge sphere, its near side 5 ahead",
             vec![ball(dvec3(0.0, 0.0, -huge - 5.0), huge, WHITE, 0.0)],
@@ -335,7 +335,7 @@ fn a_floor_hit_far_out_at_the_horizon_shows_its_square_in_the_ambient_light() {
     // Rays that meet the floor (y = -1) 10^6 to 10^12 units out, as the pixels next to the horizon
     // do: the light, 5 units up, meets the floor there almost edge on (N.L under 10^-5), so each
     // shows its square's share of the ambient light, whatever rounding does that far out.
-    let far_floor = scene(vec![floor()], dvec3(0.0, 5.0, 0.0));
+    let far_floor = scene(vec![checkered_floor()], dvec3(0.0, 5.0, 0.0));
     let mut random = Random::new(13);
     for case in 0..300 {
         let far = 10f64.powf(random.between(6.0, 12.0));
@@ -376,7 +376,7 @@ fn cameras_on_surfaces_and_far_away_give_colours_from_0_to_1() {
         ("10,000 units away", dvec3(0.0, 0.0, 1e4), 0.0, 0.0),
         ("straight up, turned past 2 pi", ORIGIN, 7.0, FRAC_PI_2),
     ] {
-        assert_valid_rays(&demo, &camera(position, yaw, pitch), case);
+        assert_valid_rays(&demo, &camera_at(position, yaw, pitch), case);
     }
 }
 

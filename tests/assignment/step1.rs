@@ -3,8 +3,7 @@ use super::*;
 
 #[test]
 fn the_default_camera_looks_from_0_0_0_at_0_0_minus_1() {
-    let middle = VIEW as f64 / 2.0; // the screen's centre, in pixels from its top left
-    let ray = Camera::default().primary_ray(middle, middle);
+    let ray = Camera::default().primary_ray(HALF, HALF); // through the screen's centre
     let [origin, direction] = [ray.origin, ray.direction].map(to_dvec3);
     assert!(
         origin == ORIGIN && direction.abs_diff_eq(AHEAD, 1e-12),

@@ -7,14 +7,14 @@ fn a_floor_square_is_odd_where_floor_x_plus_floor_z_is_odd() {
     // Squares either side of x = 0 and z = 0, and out at the horizon, past an i32's range: the
     // sum of the floors, and whether it is odd.
     let squares = [
-        ((0.5, 0.5), false),
-        ((-0.5, 0.5), true),
-        ((-0.5, -0.5), false),
-        ((1.5, -1.5), true),
-        ((3e9, 0.5), false),
-        ((-3e11 - 0.5, 0.5), true),
+        (0.5, 0.5, false),
+        (-0.5, 0.5, true),
+        (-0.5, -0.5, false),
+        (1.5, -1.5, true),
+        (3e9, 0.5, false),
+        (-3e11 - 0.5, 0.5, true),
     ];
-    for ((x, z), odd) in squares {
+    for (x, z, odd) in squares {
         let seen = odd_square(vec3(x, -1.0, z));
         assert!(
             seen == odd,
@@ -25,16 +25,19 @@ fn a_floor_square_is_odd_where_floor_x_plus_floor_z_is_odd() {
 
 #[test]
 fn odd_squares_of_a_checkered_floor_show_a_quarter_of_the_light() {
-    // Looking straight down at the odd square x = 0.5, z = -0.5 (0 + -1 is odd), lit from high
-    // above: a checkered floor shows a quarter of the light a plain one shows there.
-    let camera = camera_at(dvec3(0.5, 2.0, -0.5), 0.0, -FRAC_PI_2);
+    // Straight down onto the odd square x = 0.5, z = -0.5 (0 + -1 is odd), lit from high above: a
+    // checkered floor shows a quarter of the light a plain one shows there.
     let [checkered, plain] = [true, false].map(|checkered| {
-        let floor = object(floor_plane(), WHITE, 0.0, checkered);
-        rgb(&rendered(vec![floor], 1e6 * UP, camera), MIDDLE)[1]
+        traced(
+            vec![object(floor_plane(), WHITE, 0.0, checkered)],
+            1e6 * UP,
+            dvec3(0.5, 2.0, -0.5),
+            dvec3(0.5, -1.0, -0.5),
+        )
     });
-    let expected = f64::from(plain) * README_ODD_SQUARE_BRIGHTNESS;
+    let expected = plain * README_ODD_SQUARE_BRIGHTNESS;
     assert!(
-        (f64::from(checkered) - expected).abs() <= 1.0 && plain > 200,
-        "on the odd square, the checkered floor should show green {expected}, a quarter of the plain floor's {plain}, not {checkered}: look at where Scene::trace uses odd_square."
+        checkered.abs_diff_eq(expected, 1e-3) && plain.y > 0.5,
+        "on the odd square, the checkered floor should show {expected}, a quarter of the plain floor's {plain}, not {checkered}: look at where Scene::trace uses odd_square."
     );
 }

@@ -1,6 +1,6 @@
 //! Any camera, any scene: every colour a number from 0 to 1, every frame whole, every hit the
 //! nearest root, also far from the origin where rounding grows.
-#![allow(dead_code)] // each test file uses only part of the program
+#![allow(dead_code, clippy::needless_update)] // each test file uses only part of the program
 include!("../../src/main.rs"); // the program itself: its items in reach with no `pub`
 include!("../assignment/support.rs"); // the assignment's scenes, cameras and frames, in DVec3
 #[path = "support/random.rs"]

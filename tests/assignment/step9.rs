@@ -22,17 +22,17 @@ fn a_surface_is_lit_ambient_plus_1_minus_ambient_times_n_dot_l() {
         let expected = RED * lit(n_dot_l);
         assert!(
             seen.abs_diff_eq(expected, 1e-3),
-            "where N.L = {n_dot_l}, the red ball centred at {center} should show {expected}, not {seen}: look at Scene::trace and nearest_hit's N, turned to face the ray."
+            "where N.L = {n_dot_l}, the red ball centred at {center} should show {expected}, not {seen}: look at Scene::trace, nearest_hit's N, turned to face the ray, and, from inside, Primitive::intersect's far root."
         );
     }
 }
 
 #[test]
 fn only_a_ball_between_a_point_and_the_light_shadows_it() {
-    // The light 2 over a ball over the floor: the floor at P = (0.1, -1, -4.9) sees the light
-    // through the ball, so shows the ambient light alone. With the ball beyond the light, it is
-    // lit. Seen from 0.5 over the floor, rounding puts P a hair under it: from P itself, its shadow
-    // ray would meet the floor at once (acne).
+    // The light 2 over a ball over the floor: the floor at P = (0.1, -1, -4.9) has the ball
+    // between it and the light, so shows the ambient light alone. With the ball beyond the light,
+    // it is lit. Seen from (0, 0.5, 0), rounding puts P a hair under the floor: from P itself, its
+    // shadow ray would meet the floor at once (acne).
     let (light, point) = (dvec3(0.0, 2.0, -5.0), dvec3(0.1, -1.0, -4.9));
     let [between, beyond] = [5.0 * AHEAD, light + UP].map(|center| {
         let objects = vec![
@@ -68,8 +68,8 @@ fn a_mirror_shows_what_its_mirror_ray_meets() {
 #[test]
 fn a_ray_between_facing_half_mirrors_mixes_in_5_bounces() {
     // A red floor and a blue ceiling, y = -1 and y = 1, half mirrors, and the light between them
-    // (N.L = 1). A ray straight down bounces between them: bounce k brings back half of its
-    // mirror's colour × 1/2^k, the last bounce all of it.
+    // (N.L = 1). A ray straight down bounces between them: its hit k (0 the first, then one a
+    // bounce) brings back half of that mirror's colour × 1/2^k, the last hit all of it.
     let ceiling = Primitive::Plane {
         normal: vec3(0.0, -1.0, 0.0),
         offset: 1.0,

@@ -3,7 +3,7 @@
 //! them, and every 10th ray of that row with its hit, shadow and mirror rays.
 use super::*;
 
-/// Which of the sampled rays is the one nearest the screen's middle.
+/// Which of the sampled rays is the one just left of the screen's middle.
 const NEAR_MIDDLE: usize = VIEW / 2 / README_SAMPLED_EVERY;
 
 #[test]
@@ -47,11 +47,11 @@ fn a_tilted_plane_outlines_a_ball_where_it_cuts_it() {
 
 #[test]
 fn every_10th_ray_is_drawn_from_the_screen_to_its_hit_and_a_dot_there() {
-    // A level camera over the floor, and a ball of radius 0.1, 5 out on the sampled ray nearest
-    // the middle: that ray is drawn in yellow from the screen, 1 out, not before, to its hit, 4.9
-    // out, and ends there in a dot 3 pixels wide. The next sampled ray, 10 columns on, never comes
-    // down to the floor: it is sky blue. 6 out they are 9 pixels apart, the map black between
-    // them, as draw_slice clears it each frame.
+    // A level camera over the floor, and a ball of radius 0.1, 5 out on the sampled ray just
+    // left of the middle: that ray is drawn in yellow from the screen, 1 out, not before, to its
+    // hit, 4.9 out, and ends there in a dot 3 pixels wide. The next sampled ray, 10 columns on,
+    // never comes down to the floor: it is sky blue. 6 out they are 9 pixels apart, the map black
+    // between them, as draw_slice clears it each frame.
     let rays = sampled(Camera::default());
     let (ray, next) = (rays[NEAR_MIDDLE], rays[NEAR_MIDDLE + 1]);
     let frame = rendered(
@@ -73,9 +73,9 @@ fn every_10th_ray_is_drawn_from_the_screen_to_its_hit_and_a_dot_there() {
 
 #[test]
 fn a_shadow_ray_runs_to_the_light_or_to_what_blocks_it() {
-    // A ball of radius 0.05, 5 out on the sampled ray nearest the middle, which alone meets it,
-    // and the light 4 to the left and 2 nearer: the hit's shadow ray runs to the light (rust), or,
-    // with a ball half way, up to that ball (violet) and no further.
+    // A ball of radius 0.05, 5 out on the sampled ray just left of the middle, which alone meets
+    // it, and the light 4 to the left and 2 nearer: the hit's shadow ray runs to the light (rust),
+    // or, with a ball half way, up to that ball (violet) and no further.
     let ray = sampled(Camera::default())[NEAR_MIDDLE];
     let hit = ray * 4.95;
     let light = hit + dvec3(-4.0, 0.0, 2.0);
